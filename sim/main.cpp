@@ -18,5 +18,5 @@ int main(int argc, char** argv) {
     std::cerr << "strata-sim: error: " << e.what() << "\n";
     return 1;
   }
-  return strata::sim::exit_status();
+  return 0;
 }
