@@ -1,0 +1,226 @@
+// OBJ loader tests. Fixtures are written into a fresh temporary directory per test.
+#include "scenes/load_obj.h"
+#include "scenes/validate.h"
+#include "loader_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+
+namespace strata::scenes {
+namespace {
+
+using fixtures::sorted_coords;
+using fixtures::TempDir;
+using fixtures::write_text;
+namespace fs = std::filesystem;
+using fixtures::any_warning_contains;
+using fixtures::contains;
+using fixtures::expect_scene_error;
+
+float area(const Triangle& t) { return 0.5f * glm::length(glm::cross(t.v1 - t.v0, t.v2 - t.v0)); }
+
+const char* kQuad =
+    "v 0 0 0\n"
+    "v 1 0 0\n"
+    "v 1 1 0\n"
+    "v 0 1 0\n";
+
+TEST(LoaderObj, QuadIsTriangulatedIntoTwoTriangles) {
+  TempDir dir;
+  const auto file = write_text(dir / "quad.obj", std::string(kQuad) + "f 1 2 3 4\n");
+  Scene s;
+  load_obj(s, file);
+  ASSERT_EQ(s.triangles.size(), 2u);
+  EXPECT_FLOAT_EQ(area(s.triangles[0]), 0.5f);
+  EXPECT_FLOAT_EQ(area(s.triangles[1]), 0.5f);
+  // Together the two triangles use all four corners, each triangle three distinct ones.
+  const Bounds b = s.bounds();
+  EXPECT_EQ(b.min, glm::vec3(0, 0, 0));
+  EXPECT_EQ(b.max, glm::vec3(1, 1, 0));
+  EXPECT_EQ(s.dropped_degenerate, 0u);
+  EXPECT_TRUE(s.warnings.empty());
+  // No mtllib and no usemtl: one grey default material.
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].albedo, glm::vec3(0.8f));
+  EXPECT_EQ(s.triangles[0].material, 0u);
+}
+
+TEST(LoaderObj, PentagonAndTriangleGiveFourTriangles) {
+  TempDir dir;
+  const auto file = write_text(dir / "poly.obj",
+                               "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\n"
+                               "f 1 2 3 4 5\n"
+                               "f -5 -4 -3\n");  // relative indices: vertices 1 2 3
+  Scene s;
+  load_obj(s, file);
+  ASSERT_EQ(s.triangles.size(), 4u);
+  float total = 0;
+  for (size_t i = 0; i < 3; ++i) total += area(s.triangles[i]);
+  EXPECT_FLOAT_EQ(total, 5.0f);  // shoelace area of the pentagon
+  EXPECT_EQ(sorted_coords({s.triangles[3]}),
+            sorted_coords({Triangle{{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, 0}}));
+}
+
+TEST(LoaderObj, MtlDiffuseColourIsAlbedo) {
+  TempDir dir;
+  write_text(dir / "colors.mtl",
+             "newmtl red\nKd 1 0 0\n"
+             "newmtl blue\nKd 0.1 0.2 0.7\n");
+  const auto file = write_text(dir / "colored.obj", std::string("mtllib colors.mtl\n") + kQuad +
+                                                        "f 1 2 3\n"  // before any usemtl
+                                                        "usemtl blue\nf 1 3 4\n"
+                                                        "usemtl red\nf 1 2 4\n");
+  Scene s;
+  load_obj(s, file);
+  EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+  ASSERT_EQ(s.triangles.size(), 3u);
+  auto mat = [&](size_t i) { return s.materials.at(s.triangles[i].material); };
+  EXPECT_EQ(mat(0).name, "default");
+  EXPECT_EQ(mat(0).albedo, glm::vec3(0.8f));
+  EXPECT_EQ(mat(1).name, "blue");
+  EXPECT_EQ(mat(1).albedo, glm::vec3(0.1f, 0.2f, 0.7f));
+  EXPECT_EQ(mat(2).name, "red");
+  EXPECT_EQ(mat(2).albedo, glm::vec3(1, 0, 0));
+  EXPECT_EQ(s.triangles[1].v2, glm::vec3(0, 1, 0));
+}
+
+TEST(LoaderObj, SecondFileAppendsWithShiftedMaterialIndices) {
+  TempDir dir;
+  write_text(dir / "c.mtl", "newmtl green\nKd 0 1 0\n");
+  const auto file =
+      write_text(dir / "g.obj", std::string("mtllib c.mtl\n") + kQuad + "usemtl green\nf 1 2 3\n");
+  Scene s;
+  load_obj(s, file);
+  load_obj(s, file);
+  ASSERT_EQ(s.triangles.size(), 2u);
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.triangles[0].material, 0u);
+  EXPECT_EQ(s.triangles[1].material, 1u);
+  EXPECT_EQ(s.materials[1].albedo, glm::vec3(0, 1, 0));
+}
+
+TEST(LoaderObj, MissingMtlWarnsAndUsesDefaultMaterial) {
+  TempDir dir;
+  const auto file = write_text(dir / "nomtl.obj", std::string("mtllib missing.mtl\n") + kQuad +
+                                                      "usemtl stone\nf 1 2 3\nf 1 3 4\n");
+  Scene s;
+  load_obj(s, file);
+  ASSERT_EQ(s.triangles.size(), 2u);
+  EXPECT_TRUE(any_warning_contains(s, "missing.mtl"));
+  EXPECT_TRUE(any_warning_contains(s, "stone"));
+  for (const std::string& w : s.warnings) EXPECT_TRUE(contains(w, "nomtl.obj"));
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].albedo, glm::vec3(0.8f));
+  EXPECT_EQ(s.triangles[1].material, 0u);
+}
+
+TEST(LoaderObj, TruncatedFileReferencingMissingVertexThrows) {
+  TempDir dir;
+  // The vertex list was cut after three vertices; the second face needs vertex 4.
+  const auto file = write_text(dir / "cut.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 1 3 4\n");
+  Scene s;
+  expect_scene_error([&] { load_obj(s, file); }, {"cut.obj"});
+  EXPECT_TRUE(s.triangles.empty()) << "a failed load must not leave partial geometry";
+  EXPECT_TRUE(s.materials.empty());
+}
+
+TEST(LoaderObj, TruncatedQuadReferencingMissingVertexThrows) {
+  TempDir dir;
+  // tinyobjloader silently skips such a quad; we must not.
+  const auto file = write_text(dir / "cutquad.obj", std::string(kQuad) + "f 1 2 3 9\n");
+  Scene s;
+  expect_scene_error([&] { load_obj(s, file); }, {"cutquad.obj"});
+}
+
+TEST(LoaderObj, RelativeIndexBeforeFirstVertexThrows) {
+  TempDir dir;
+  const auto file = write_text(dir / "rel.obj", std::string(kQuad) + "f -1 -2 -7\n");
+  Scene s;
+  expect_scene_error([&] { load_obj(s, file); }, {"rel.obj", "vertex"});
+}
+
+TEST(LoaderObj, FaceWithTwoVerticesWarnsAndKeepsTheRest) {
+  TempDir dir;
+  const auto file = write_text(dir / "short.obj", std::string(kQuad) + "f 1 2 3\nf 1 2");
+  Scene s;
+  load_obj(s, file);
+  EXPECT_EQ(s.triangles.size(), 1u);
+  EXPECT_TRUE(any_warning_contains(s, "Degenerated face")) << ::testing::PrintToString(s.warnings);
+  EXPECT_TRUE(any_warning_contains(s, "truncated"));
+}
+
+// Whatever byte a file is cut at, loading either fails with SceneError or succeeds with
+// a warning about the missing final newline; it never crashes or reads out of bounds.
+TEST(LoaderObj, EveryTruncationFailsOrWarns) {
+  TempDir dir;
+  const std::string text = std::string(kQuad) + "f 1 2 3\nf 1 3 4\nv 2 2 2\nf -1 -2 -3 -4\n";
+  for (size_t n = 1; n < text.size(); ++n) {
+    Scene s;
+    try {
+      load_obj(s, write_text(dir / "t.obj", text.substr(0, n)));
+      if (text[n - 1] != '\n') {
+        EXPECT_TRUE(any_warning_contains(s, "truncated")) << n;
+      }
+    } catch (const SceneError& e) {
+      EXPECT_TRUE(contains(e.what(), "t.obj")) << n;
+    }
+  }
+}
+
+TEST(LoaderObj, ZeroIndexIsAParseError) {
+  TempDir dir;
+  const auto file = write_text(dir / "zero.obj", std::string(kQuad) + "f 0 1 2\n");
+  Scene s;
+  expect_scene_error([&] { load_obj(s, file); }, {"zero.obj", "parse error"});
+}
+
+TEST(LoaderObj, OnlyDegenerateTrianglesAreDroppedThenRequireTrianglesFails) {
+  TempDir dir;
+  const auto file = write_text(dir / "flat.obj",
+                               "v 0 0 0\nv 1 0 0\nv 2 0 0\n"
+                               "f 1 2 3\n"   // collinear
+                               "f 1 1 2\n"); // repeated vertex
+  Scene s;
+  load_obj(s, file);
+  EXPECT_TRUE(s.triangles.empty());
+  EXPECT_EQ(s.dropped_degenerate, 2u);
+  EXPECT_TRUE(any_warning_contains(s, "flat.obj: dropped 2 zero-area"));
+  expect_scene_error([&] { require_triangles(s, file.string()); },
+                     {"flat.obj", "scene has no triangles"});
+}
+
+TEST(LoaderObj, MissingFileThrows) {
+  TempDir dir;
+  Scene s;
+  expect_scene_error([&] { load_obj(s, dir / "nope.obj"); }, {"nope.obj", "not found"});
+}
+
+TEST(LoaderObj, Sibenik) {
+  const fs::path file = STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj";
+  if (!fs::exists(file)) GTEST_SKIP() << file << " not present";
+  Scene s;
+  const auto start = std::chrono::steady_clock::now();
+  load_obj(s, file);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 5.0) << "loading 73k triangles should take well under a second";
+  // Every face line of the file is a triangle; zero-area ones are dropped.
+  EXPECT_EQ(s.triangles.size() + s.dropped_degenerate, 73564u);
+  EXPECT_EQ(s.dropped_degenerate, 8u);  // all exactly collinear, measured
+  const Bounds b = s.bounds();
+  EXPECT_NEAR(b.min.x, -20.1f, 0.1f);
+  EXPECT_NEAR(b.min.y, -15.3f, 0.1f);
+  EXPECT_NEAR(b.min.z, -8.5f, 0.1f);
+  EXPECT_NEAR(b.max.x, 20.1f, 0.1f);
+  EXPECT_NEAR(b.max.y, 15.3f, 0.1f);
+  EXPECT_NEAR(b.max.z, 8.5f, 0.1f);
+  // The file's mtllib (untitled.mtl) is not shipped: default material plus a warning.
+  EXPECT_TRUE(any_warning_contains(s, "untitled.mtl"));
+  for (const Triangle& t : s.triangles) ASSERT_LT(t.material, s.materials.size());
+}
+
+}  // namespace
+}  // namespace strata::scenes
