@@ -13,6 +13,7 @@
 //             const TriangleRecord& triangle(uint32_t byte_offset) const;
 //   Observer: void node_visited(uint32_t index); void leaf_visited(uint32_t leaf_ref);
 //             void triangle_tested();   (for statistics; NullObserver ignores them)
+// trace_closest finds the closest hit; trace_any stops at the first (occlusion queries).
 #pragma once
 
 #include <stdint.h>
@@ -32,6 +33,7 @@ struct ClosestHit {
   bool hit;
   float t, b1, b2;
   uint32_t primitive, material;
+  uint32_t triangle_offset;  // byte offset of the hit TriangleRecord in the triangle section
 };
 
 struct NullObserver {
@@ -42,14 +44,16 @@ struct NullObserver {
 
 namespace detail {
 
-template <class Memory, class Observer>
-inline void test_leaf(const Memory& mem, uint32_t ref, const TraceRay& ray, ClosestHit* best,
+// Returns true when an any-hit (occlusion) query may stop.
+template <bool kAnyHit, class Memory, class Observer>
+inline bool test_leaf(const Memory& mem, uint32_t ref, const TraceRay& ray, ClosestHit* best,
                       BoxRay* box_ray, Observer& obs) {
   obs.leaf_visited(ref);
   const uint32_t count = leaf_count(ref);
   const uint32_t offset = leaf_byte_offset(ref);
   for (uint32_t i = 0; i < count; ++i) {
-    const TriangleRecord& tri = mem.triangle(offset + i * uint32_t(sizeof(TriangleRecord)));
+    const uint32_t tri_offset = offset + i * uint32_t(sizeof(TriangleRecord));
+    const TriangleRecord& tri = mem.triangle(tri_offset);
     obs.triangle_tested();
     TrianglePartial partial;
     if (!triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin,
@@ -58,10 +62,12 @@ inline void test_leaf(const Memory& mem, uint32_t ref, const TraceRay& ray, Clos
     const TriangleHit h = triangle_finish(partial);
     // Strictly closer wins, so among equal distances the first one found is kept.
     if (h.t > ray.tmin && h.t < box_ray->tmax) {
-      *best = {true, h.t, h.b1, h.b2, tri.primitive, tri.material};
+      *best = {true, h.t, h.b1, h.b2, tri.primitive, tri.material, tri_offset};
       box_ray->tmax = h.t;
+      if (kAnyHit) return true;
     }
   }
+  return false;
 }
 
 inline bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_entry) {
@@ -69,12 +75,9 @@ inline bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_
   return intersect_box(n.child_min[side], n.child_max[side], r, t_entry);
 }
 
-}  // namespace detail
-
-template <class Memory, class Observer = NullObserver>
-inline ClosestHit trace_closest(const Memory& mem, uint32_t root, const TraceRay& ray,
-                                Observer& obs) {
-  ClosestHit best = {false, ray.tmax, 0.0f, 0.0f, 0u, 0u};
+template <bool kAnyHit, class Memory, class Observer>
+inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray, Observer& obs) {
+  ClosestHit best = {false, ray.tmax, 0.0f, 0.0f, 0u, 0u, 0u};
   BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, ray.tmax};
   uint32_t node = root;
   uint32_t stack = 0;
@@ -105,7 +108,7 @@ inline ClosestHit trace_closest(const Memory& mem, uint32_t root, const TraceRay
     if (go >= 0) {
       const uint32_t ref = n.child[go];
       if (child_is_leaf(ref)) {
-        detail::test_leaf(mem, ref, ray, &best, &box_ray, obs);
+        if (detail::test_leaf<kAnyHit>(mem, ref, ray, &best, &box_ray, obs)) break;
         returning_from = go;
       } else {
         node = ref;
@@ -120,6 +123,22 @@ inline ClosestHit trace_closest(const Memory& mem, uint32_t root, const TraceRay
     returning_from = mem.node(node).child[0] == child ? 0 : 1;
   }
   return best;
+}
+
+}  // namespace detail
+
+// The closest hit in (tmin, tmax); among equally close hits, the first found.
+template <class Memory, class Observer>
+inline ClosestHit trace_closest(const Memory& mem, uint32_t root, const TraceRay& ray,
+                                Observer& obs) {
+  return detail::traverse<false>(mem, root, ray, obs);
+}
+
+// Any hit in (tmin, tmax): stops at the first one (shadow rays). Its hit record is that
+// first hit, not the closest.
+template <class Memory, class Observer>
+inline ClosestHit trace_any(const Memory& mem, uint32_t root, const TraceRay& ray, Observer& obs) {
+  return detail::traverse<true>(mem, root, ray, obs);
 }
 
 }  // namespace strata

@@ -75,7 +75,7 @@ void expect_all_reachable_once(const Walk& w, size_t triangles) {
 }
 
 ClosestHit brute_force(const Scene& s, const TraceRay& ray) {
-  ClosestHit best{false, ray.tmax, 0, 0, 0, 0};
+  ClosestHit best{false, ray.tmax, 0, 0, 0, 0, 0};
   for (uint32_t i = 0; i < s.triangles.size(); ++i) {
     const Triangle& t = s.triangles[i];
     TrianglePartial p;
@@ -83,7 +83,7 @@ ClosestHit brute_force(const Scene& s, const TraceRay& ray) {
                            ray.origin, ray.dir, &p))
       continue;
     const TriangleHit h = triangle_finish(p);
-    if (h.t > ray.tmin && h.t < best.t) best = {true, h.t, h.b1, h.b2, i, t.material};
+    if (h.t > ray.tmin && h.t < best.t) best = {true, h.t, h.b1, h.b2, i, t.material, 0};
   }
   return best;
 }

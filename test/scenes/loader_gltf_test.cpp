@@ -66,13 +66,18 @@ TEST(LoaderGltf, NodeHierarchyGivesExactWorldPositions) {
   EXPECT_TRUE(s.warnings.empty());
 }
 
-TEST(LoaderGltf, QuarterTurnAndMatrixNodes) {
+TEST(LoaderGltf, QuarterTurnTrsAndMatrixNodes) {
   TempDir dir;
   GltfBuilder g;
   const int mesh = add_mesh(g, kTri, {0, 1, 2});
   const double h = std::sqrt(0.5);
   g.doc["nodes"] = json::array({
-      {{"rotation", {h, 0, 0, h}}, {"mesh", mesh}},  // 90 deg about x: (x,y,z)->(x,-z,y)
+      // T * R * S with R = 90 deg about x, (x,y,z) -> (x,-z,y). The rotation does not
+      // commute with the non-uniform scale, so a wrong composition order shows.
+      {{"translation", {1, 2, 3}},
+       {"rotation", {h, 0, 0, h}},
+       {"scale", {2, 3, 4}},
+       {"mesh", mesh}},
       // Column-major matrix: scale 2 on x, then translate by (100, 0, -1).
       {{"matrix", {2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 100, 0, -1, 1}}, {"mesh", mesh}},
   });
@@ -80,10 +85,11 @@ TEST(LoaderGltf, QuarterTurnAndMatrixNodes) {
   const Scene s = load_gltf_text(dir, "q.gltf", g.gltf());
   ASSERT_EQ(s.triangles.size(), 2u);
   const Triangle& r = s.triangles[0];
-  const glm::vec3 expect[3] = {{1, 0, 0}, {0, 0, 2}, {0, -3, 0}};
+  // p -> (2x, 3y, 4z) -> (2x, -4z, 3y) -> + (1, 2, 3)
+  const glm::vec3 expect[3] = {{3, 2, 3}, {1, 2, 9}, {1, -10, 3}};
   const glm::vec3 got[3] = {r.v0, r.v1, r.v2};
   for (int i = 0; i < 3; ++i) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[i][c], expect[i][c], 1e-6f) << i << "," << c;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[i][c], expect[i][c], 1e-5f) << i << "," << c;
   }
   EXPECT_EQ(s.triangles[1].v0, glm::vec3(102, 0, -1));
   EXPECT_EQ(s.triangles[1].v1, glm::vec3(100, 2, -1));
@@ -110,7 +116,7 @@ TEST(LoaderGltf, SeveralMeshesAndPrimitivesIndexedAndNot) {
   const std::vector<glm::vec3> quad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   json mesh0 = {{"primitives",
                  {{{"attributes", {{"POSITION", g.add_positions(quad)}}},
-                   {"indices", g.add_indices({0, 1, 2, 0, 2, 3}, 5121)}},  // u8
+                   {"indices", g.add_indices({0, 1, 2, 0, 2, 3}, 5121)}},      // u8
                   {{"attributes", {{"POSITION", g.add_positions(kTri)}}}}}}};  // non-indexed
   json mesh1 = {{"primitives",
                  {{{"attributes", {{"POSITION", g.add_positions(quad)}}},
@@ -136,7 +142,7 @@ TEST(LoaderGltf, NonTrianglePrimitivesAreSkippedWithAWarning) {
                        {{{"attributes", {{"POSITION", four}}}, {"mode", 1}},  // LINES
                         {{"attributes", {{"POSITION", four}}}, {"mode", 0}},  // POINTS
                         {{"attributes", {{"POSITION", tri}}}, {"mode", 4}},
-                        {{"attributes", {{"POSITION", four}}}, {"mode", 5}},     // strip: 2
+                        {{"attributes", {{"POSITION", four}}}, {"mode", 5}},      // strip: 2
                         {{"attributes", {{"POSITION", four}}}, {"mode", 6}}}}}};  // fan: 2
   g.doc["nodes"] = json::array({{{"mesh", 0}}});
   g.doc["scenes"] = json::array({{{"nodes", {0}}}});
@@ -178,8 +184,8 @@ TEST(LoaderGltf, BaseColorFactorIsAlbedo) {
 TEST(LoaderGltf, GlbGivesTheSameTrianglesAsGltf) {
   TempDir dir;
   GltfBuilder g = hierarchy();
-  g.doc["materials"] = json::array(
-      {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.3, 1}}}}}});
+  g.doc["materials"] =
+      json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.3, 1}}}}}});
   add_mesh(g, {{0, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 1, 2}, 0);
   g.doc["nodes"].push_back({{"mesh", 1}, {"scale", {1, 1, 5}}});
   g.doc["nodes"][0]["children"].push_back(2);
@@ -202,16 +208,20 @@ TEST(LoaderGltf, InterleavedBufferRespectsByteStrideAndOffset) {
   TempDir dir;
   GltfBuilder g;
   // [position, other vec3] x 3; the second accessor reads the "other" halves.
-  const std::vector<glm::vec3> data = {{1, 0, 0}, {7, 7, 7}, {0, 1, 0}, {8, 8, 8}, {0, 0, 1}, {9, 9, 10}};
+  const std::vector<glm::vec3> data = {{1, 0, 0}, {7, 7, 7}, {0, 1, 0},
+                                       {8, 8, 8}, {0, 0, 1}, {9, 9, 10}};
   const size_t offset = g.append(data.data(), data.size() * sizeof(glm::vec3));
   const int view = g.add_view(offset, data.size() * sizeof(glm::vec3), 34962);
   g.doc["bufferViews"][view]["byteStride"] = 24;
-  const int a = g.add_accessor({{"bufferView", view}, {"componentType", 5126}, {"count", 3},
+  const int a = g.add_accessor(
+      {{"bufferView", view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  const int b = g.add_accessor({{"bufferView", view},
+                                {"byteOffset", 12},
+                                {"componentType", 5126},
+                                {"count", 3},
                                 {"type", "VEC3"}});
-  const int b = g.add_accessor({{"bufferView", view}, {"byteOffset", 12}, {"componentType", 5126},
-                                {"count", 3}, {"type", "VEC3"}});
-  g.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", a}}}},
-                                      {{"attributes", {{"POSITION", b}}}}}}}};
+  g.doc["meshes"] = {
+      {{"primitives", {{{"attributes", {{"POSITION", a}}}}, {{"attributes", {{"POSITION", b}}}}}}}};
   g.doc["nodes"] = json::array({{{"mesh", 0}}});
   g.doc["scenes"] = json::array({{{"nodes", {0}}}});
   const Scene s = load_gltf_text(dir, "stride.gltf", g.gltf());
@@ -267,8 +277,11 @@ TEST(LoaderGltf, MalformedAndTruncatedFilesThrow) {
         load_gltf(s, write_bytes(dir / "cut.glb", {glb.begin(), glb.begin() + glb.size() / 2}));
       },
       {"cut.glb"});
-  expect_scene_error([&] { load_gltf(s, write_bytes(dir / "tiny.glb", {'g', 'l', 'T', 'F'})); },
-                     {"tiny.glb"});
+  expect_scene_error(
+      [&] {
+        load_gltf(s, write_bytes(dir / "tiny.glb", {'g', 'l', 'T', 'F'}));
+      },
+      {"tiny.glb"});
   EXPECT_TRUE(s.triangles.empty());
   EXPECT_TRUE(s.materials.empty());
 }
@@ -342,6 +355,16 @@ TEST(LoaderGltf, NaNCoordinateThrowsNamingTheFile) {
   Scene s;
   expect_scene_error([&] { load_gltf(s, write_bytes(dir / "nan.glb", g.glb())); },
                      {"nan.glb", "non-finite"});
+}
+
+TEST(LoaderGltf, RequiredGeometryCompressionExtensionIsAnError) {
+  TempDir dir;
+  GltfBuilder g = hierarchy();
+  g.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  g.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  Scene s;
+  expect_scene_error([&] { load_gltf(s, write_text(dir / "draco.gltf", g.gltf())); },
+                     {"draco.gltf", "KHR_draco_mesh_compression"});
 }
 
 TEST(LoaderGltf, MissingFileAndUnsupportedExtensionThrow) {

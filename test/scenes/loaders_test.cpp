@@ -181,8 +181,8 @@ TEST(LoaderObj, OnlyDegenerateTrianglesAreDroppedThenRequireTrianglesFails) {
   TempDir dir;
   const auto file = write_text(dir / "flat.obj",
                                "v 0 0 0\nv 1 0 0\nv 2 0 0\n"
-                               "f 1 2 3\n"   // collinear
-                               "f 1 1 2\n"); // repeated vertex
+                               "f 1 2 3\n"    // collinear
+                               "f 1 1 2\n");  // repeated vertex
   Scene s;
   load_obj(s, file);
   EXPECT_TRUE(s.triangles.empty());

@@ -80,8 +80,8 @@ TEST(SceneDescription, UnknownKeysAreErrors) {
       {"scene.json: lights: unknown key"});
   expect_scene_error(
       [&] {
-        load_scene_description(write_text(
-            dir / "scene.json", R"({"geometry": ["tri.obj"], "camera": {"fov": 40}})"));
+        load_scene_description(
+            write_text(dir / "scene.json", R"({"geometry": ["tri.obj"], "camera": {"fov": 40}})"));
       },
       {"scene.json: camera.fov: unknown key"});
 }

@@ -20,7 +20,7 @@ TEST(Validate, DropsExactlyZeroAreaTrianglesAndKeepsNeedles) {
   const Triangle good{kO, kX, kY, 1};
   const Triangle repeated{kO, kX, kX, 0};
   const Triangle collinear{kO, kX, {2, 0, 0}, 0};
-  const Triangle needle{kO, kX, {0.5f, 1e-20f, 0}, 2};     // tiny but nonzero area
+  const Triangle needle{kO, kX, {0.5f, 1e-20f, 0}, 2};  // tiny but nonzero area
   const Triangle sliver{{1e6f, 0, 0}, {1e6f + 0.0625f, 0, 0}, {1e6f, 1e-3f, 0}, 3};
   s.triangles = {before_first, good, repeated, collinear, needle, sliver};
   validate_triangles(s, 1, "mesh.obj");
