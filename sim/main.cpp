@@ -10,6 +10,8 @@ int main(int argc, char** argv) {
   CLI::App app{"strata-sim: SystemC/TLM-2.0 model of the STRaTA ray-tracing architecture"};
   app.require_subcommand(1);
   strata::sim::add_scene_command(app);
+  strata::sim::add_render_command(app);
+  strata::sim::add_trace_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

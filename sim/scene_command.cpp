@@ -1,5 +1,4 @@
 // `strata-sim scene info <scene>`: loads or builds a scene image and prints its statistics.
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -7,22 +6,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scenes/scene_cache.h"
-#include "scenes/scene_spec.h"
 #include "scenes/scene_stats.h"
 #include "sim/commands.h"
+#include "sim/scene_source.h"
 
 namespace strata::sim {
 namespace {
 
 struct SceneInfoOptions {
-  std::string scene;
-  scenes::SceneImageParams params;
-  std::string policy = "surface-area";
+  SceneSourceOptions source;
   uint32_t rays = 100000;
   uint64_t seed = 1;
-  std::string cache_dir;
-  bool no_cache = false;
   std::string json_out;
 };
 
@@ -32,7 +26,7 @@ nlohmann::json to_json(const scenes::Scene& scene, const scenes::SceneImage& ima
                        const scenes::CrossingStats& cross, const SceneInfoOptions& o) {
   const SceneImageHeader& h = image.header();
   nlohmann::json j;
-  j["scene"] = o.scene;
+  j["scene"] = o.source.scene;
   j["triangles"] = h.triangle_count;
   j["dropped_degenerate_triangles"] = scene.dropped_degenerate;
   j["bounds"] = {{"min", {h.bounds_min[0], h.bounds_min[1], h.bounds_min[2]}},
@@ -40,11 +34,11 @@ nlohmann::json to_json(const scenes::Scene& scene, const scenes::SceneImage& ima
   j["image_bytes"] = h.image_bytes;
   std::vector<uint32_t> histogram(bvh.leaf_size_histogram.begin(), bvh.leaf_size_histogram.end());
   j["bvh"] = {{"inner_nodes", bvh.inner_nodes},     {"leaves", bvh.leaves},
-              {"depth", bvh.depth},                 {"max_depth_bound", o.params.bvh.max_depth},
+              {"depth", bvh.depth},                 {"max_depth_bound", o.source.params.bvh.max_depth},
               {"sah_cost", bvh.sah_cost},           {"mean_leaf_triangles", bvh.mean_leaf_triangles},
-              {"leaf_size_histogram", histogram},   {"max_leaf_triangles", o.params.bvh.max_leaf_triangles},
-              {"sah_bins", o.params.bvh.bins}};
-  j["treelets"] = {{"policy", to_string(o.params.treelet_policy)},
+              {"leaf_size_histogram", histogram},   {"max_leaf_triangles", o.source.params.bvh.max_leaf_triangles},
+              {"sah_bins", o.source.params.bvh.bins}};
+  j["treelets"] = {{"policy", o.source.treelet_policy},
                    {"treelet_bytes", h.treelet_bytes},
                    {"node_treelets", tl.node_treelets},
                    {"triangle_treelets", tl.triangle_treelets},
@@ -103,22 +97,12 @@ void print_summary(const nlohmann::json& j) {
   std::printf("cache            %s\n", j["cache"].get<std::string>().c_str());
 }
 
-void run_scene_info(const SceneInfoOptions& opts) {
-  SceneInfoOptions o = opts;
-  o.params.treelet_policy = scenes::parse_treelet_policy(o.policy);
-  const auto t0 = std::chrono::steady_clock::now();
-  scenes::Scene scene = scenes::load_scene(o.scene, STRATA_SOURCE_DIR);
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
-
-  const std::filesystem::path cache =
-      o.no_cache ? std::filesystem::path() : (o.cache_dir.empty() ? scenes::default_cache_dir() : std::filesystem::path(o.cache_dir));
-  scenes::SceneBuildReport build;
-  const scenes::SceneImage image = scenes::load_or_build_scene_image(scene, o.params, cache, &build);
-  const nlohmann::json j = to_json(scene, image, build, load_seconds, scenes::bvh_stats(image),
-                                   scenes::treelet_stats(image),
-                                   scenes::measure_crossings(image, o.rays, o.seed), o);
+void run_scene_info(const SceneInfoOptions& o) {
+  const LoadedScene loaded = load_scene_and_image(o.source);
+  const nlohmann::json j =
+      to_json(loaded.scene, loaded.image, loaded.build, loaded.load_seconds,
+              scenes::bvh_stats(loaded.image), scenes::treelet_stats(loaded.image),
+              scenes::measure_crossings(loaded.image, o.rays, o.seed), o);
   print_summary(j);
   if (!o.json_out.empty()) {
     std::ofstream out(o.json_out);
@@ -134,19 +118,12 @@ void add_scene_command(CLI::App& app) {
   scene->require_subcommand(1);
   auto* info = scene->add_subcommand("info", "Print triangle, BVH and treelet statistics of a scene");
   auto opts = std::make_shared<SceneInfoOptions>();
-  info->add_option("scene", opts->scene,
+  info->add_option("scene", opts->source.scene,
                    "scene.json, mesh (.obj/.gltf/.glb), or cornell|hairball|vegetation[:size=F,seed=N]|sibenik")
       ->required();
-  info->add_option("--treelet-bytes", opts->params.treelet_bytes, "treelet size in bytes (= L1 size)")
-      ->capture_default_str();
-  info->add_option("--max-leaf", opts->params.bvh.max_leaf_triangles, "triangles per leaf, at most")
-      ->capture_default_str();
-  info->add_option("--bins", opts->params.bvh.bins, "SAH bins per axis")->capture_default_str();
-  info->add_option("--treelet-policy", opts->policy, "surface-area or breadth-first")->capture_default_str();
+  add_scene_build_options(info, opts->source);
   info->add_option("--rays", opts->rays, "random rays for the crossing statistics")->capture_default_str();
   info->add_option("--seed", opts->seed, "seed of the random rays")->capture_default_str();
-  info->add_option("--cache-dir", opts->cache_dir, "scene image cache (default: $STRATA_CACHE_DIR or ~/.cache/strata-tlm)");
-  info->add_flag("--no-cache", opts->no_cache, "always build, never read or write the cache");
   info->add_option("--json", opts->json_out, "also write the statistics as JSON to this file");
   info->callback([opts] { run_scene_info(*opts); });
 }

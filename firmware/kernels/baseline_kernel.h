@@ -1,0 +1,80 @@
+// The TRaX baseline kernel: each thread takes pixels by atomic increment of a global
+// register and traces each path to completion with the bit-stack traversal in
+// general-purpose instructions. Built natively, it is the native twin (the golden model).
+//
+// `Machine` supplies the STRaTA intrinsics the kernel needs (here only the global-register
+// atomic increment); natively a plain counter, on RISC-V the custom instruction.
+#pragma once
+
+#include "firmware/kernels/path_shading.h"
+
+namespace strata::kernels {
+
+constexpr uint32_t kPixelCounterRegister = 0;  // global register handing out pixels
+
+struct KernelContext {
+  SceneView scene;
+  const FrameParams* frame;
+  Pixel* framebuffer;
+  RayCounters* counters;  // this thread's record
+};
+
+struct CountingObserver {
+  RayCounters* c;
+  void node_visited(uint32_t) { ++c->node_visits; }
+  void leaf_visited(uint32_t) {}
+  void triangle_tested() { ++c->triangle_tests; }
+};
+
+// One sample of one pixel, traced to the end of its path.
+inline Vec3f trace_sample(const KernelContext& ctx, uint32_t pixel, uint32_t sample_index) {
+  const FrameParams& f = *ctx.frame;
+  const uint32_t root = ctx.scene.header().root_node;
+  CountingObserver obs{ctx.counters};
+  PathState path = start_path(f, sample_index);
+  TraceRay ray = camera_ray(f, pixel, path.rng);
+  uint32_t type = kPrimaryRay;
+  for (;;) {
+    ++ctx.counters->rays[type];
+    const ClosestHit hit = trace_closest(ctx.scene, root, ray, obs);
+    if (!hit.hit) {
+      shade_miss(ctx.scene, &path);
+      break;
+    }
+    ++ctx.counters->hits[type];
+    const HitShading s =
+        shade_hit(ctx.scene, f, ray, hit, ctx.scene.triangle(hit.triangle_offset), &path);
+    if (s.has_shadow_ray) {
+      ++ctx.counters->rays[kShadowRay];
+      if (trace_any(ctx.scene, root, s.shadow_ray, obs).hit)
+        ++ctx.counters->hits[kShadowRay];
+      else
+        path.radiance = path.radiance + s.shadow_radiance;
+    }
+    if (!s.has_bounce_ray) break;
+    ray = s.bounce_ray;
+    type = kBounceRay;
+  }
+  ++ctx.counters->paths;
+  return path.radiance;
+}
+
+// The per-thread kernel: pixels are handed out one at a time; all samples of a pixel are
+// traced by the thread that took it, so the pixel's sum has a fixed order.
+template <class Machine>
+inline void baseline_kernel(Machine& machine, const KernelContext& ctx) {
+  const FrameParams& f = *ctx.frame;
+  const uint32_t pixels = f.width * f.height;
+  const float inv_spp = 1.0f / float(f.samples_per_pixel);
+  for (;;) {
+    const uint32_t pixel = machine.atomic_increment(kPixelCounterRegister);
+    if (pixel >= pixels) break;
+    Vec3f sum{0.0f, 0.0f, 0.0f};
+    for (uint32_t s = 0; s < f.samples_per_pixel; ++s)
+      sum = sum + trace_sample(ctx, pixel, pixel * f.samples_per_pixel + s);
+    const Vec3f avg = sum * inv_spp;
+    ctx.framebuffer[pixel] = {{avg.x, avg.y, avg.z}};
+  }
+}
+
+}  // namespace strata::kernels

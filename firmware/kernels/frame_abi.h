@@ -1,0 +1,42 @@
+// What the host (or the chip's loader) hands a render kernel, and what the kernel writes
+// back, at fixed layouts: the same bytes natively and in simulated memory on RV32.
+#pragma once
+
+#include <stdint.h>
+
+namespace strata::kernels {
+
+// Camera rays are generated from a precomputed pinhole basis: the host computes it once
+// in double precision, so the kernels need no trigonometry.
+//   direction(x, y) = lower_left + du * x + dv * y, with (x, y) in pixels from the bottom left
+struct FrameParams {
+  uint32_t width, height;
+  uint32_t samples_per_pixel;
+  uint32_t max_path_vertices;  // closest-hit segments per path (5: primary + 4 bounces)
+  uint32_t seed;
+  uint32_t pad0[3];
+  float camera_origin[3], pad1;
+  float camera_lower_left[3], pad2;
+  float camera_du[3], pad3;
+  float camera_dv[3], pad4;
+};
+static_assert(sizeof(FrameParams) == 96, "FrameParams layout");
+
+enum RayType : uint32_t { kPrimaryRay = 0, kBounceRay = 1, kShadowRay = 2, kRayTypes = 3 };
+
+// Statistics a thread accumulates; each thread owns one record, so no atomics are needed.
+struct RayCounters {
+  uint64_t rays[kRayTypes];
+  uint64_t hits[kRayTypes];  // shadow "hits" are occluded shadow rays
+  uint64_t node_visits;      // BVH node reads
+  uint64_t triangle_tests;
+  uint64_t paths;
+};
+static_assert(sizeof(RayCounters) == 72, "RayCounters layout");
+
+// One pixel of the framebuffer: linear radiance, averaged over the pixel's samples.
+struct Pixel {
+  float rgb[3];
+};
+
+}  // namespace strata::kernels
