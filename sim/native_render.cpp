@@ -10,10 +10,14 @@
 namespace strata::sim {
 namespace {
 
-// The native stand-in for the chip's global registers.
+// The native stand-in for the chip: its global registers, and an optional ray recorder.
 struct NativeMachine {
   uint32_t globals[32] = {};
+  std::vector<TraceRay>* ray_log = nullptr;
   uint32_t atomic_increment(uint32_t reg) { return globals[reg]++; }
+  void ray_issued(const TraceRay& ray, uint32_t) {
+    if (ray_log) ray_log->push_back(ray);
+  }
 };
 
 struct D3 {
@@ -69,12 +73,14 @@ kernels::FrameParams make_frame_params(const SceneImageHeader& h, const RenderSe
   return f;
 }
 
-RenderResult render_native(const scenes::SceneImage& image, const RenderSettings& settings) {
+RenderResult render_native(const scenes::SceneImage& image, const RenderSettings& settings,
+                           std::vector<TraceRay>* ray_log) {
   check_render_settings(settings);
   const kernels::FrameParams frame = make_frame_params(image.header(), settings);
   RenderResult result;
   result.image.assign(size_t(settings.width) * settings.height, kernels::Pixel{});
   NativeMachine machine;
+  machine.ray_log = ray_log;
   const kernels::KernelContext ctx{kernels::SceneView(image.bytes()), &frame, result.image.data(),
                                    &result.counters};
   const auto t0 = std::chrono::steady_clock::now();

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "firmware/common/traverse.h"
 #include "firmware/kernels/frame_abi.h"
 #include "scenes/scene_image.h"
 
@@ -29,6 +30,8 @@ kernels::FrameParams make_frame_params(const SceneImageHeader& scene, const Rend
 
 void check_render_settings(const RenderSettings& s);  // throws std::invalid_argument
 
-RenderResult render_native(const scenes::SceneImage& image, const RenderSettings& settings);
+// `ray_log`, if given, receives every ray in the order the kernel traces them.
+RenderResult render_native(const scenes::SceneImage& image, const RenderSettings& settings,
+                           std::vector<TraceRay>* ray_log = nullptr);
 
 }  // namespace strata::sim

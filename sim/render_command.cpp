@@ -10,6 +10,7 @@
 #include "sim/commands.h"
 #include "sim/image_output.h"
 #include "sim/native_render.h"
+#include "sim/ray_file.h"
 #include "sim/resolution.h"
 #include "sim/scene_source.h"
 
@@ -22,6 +23,7 @@ struct RenderOptions {
   RenderSettings settings;
   float exposure = 1.0f;
   std::string out_dir = "out/native";
+  std::string dump_rays;  // ray file of every traced ray, for replay in other tracers
 };
 
 nlohmann::json stats_json(const RenderOptions& o, const RenderResult& r) {
@@ -77,7 +79,8 @@ void run_render(RenderOptions o) {
   check_render_settings(o.settings);
   if (!(o.exposure > 0.0f)) throw std::invalid_argument("exposure: must be positive");
   const LoadedScene loaded = load_scene_and_image(o.source);
-  const RenderResult r = render_native(loaded.image, o.settings);
+  std::vector<TraceRay> rays;
+  const RenderResult r = render_native(loaded.image, o.settings, o.dump_rays.empty() ? nullptr : &rays);
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
   write_exr(dir / "native.exr", o.settings.width, o.settings.height, r.image);
@@ -87,6 +90,15 @@ void run_render(RenderOptions o) {
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error((dir / "native-stats.json").string() + ": cannot write");
   print_summary(j, dir.string());
+  if (!o.dump_rays.empty()) {
+    std::vector<RayRecord> records(rays.size());
+    for (size_t i = 0; i < rays.size(); ++i) {
+      const TraceRay& t = rays[i];
+      records[i] = {{t.origin.x, t.origin.y, t.origin.z}, {t.dir.x, t.dir.y, t.dir.z}, t.tmin, t.tmax};
+    }
+    write_ray_file(o.dump_rays, records);
+    std::printf("wrote          %zu rays to %s\n", records.size(), o.dump_rays.c_str());
+  }
 }
 
 }  // namespace
@@ -104,6 +116,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", opts->settings.seed, "random seed of the frame")->capture_default_str();
   cmd->add_option("--exposure", opts->exposure, "PNG preview exposure multiplier")->capture_default_str();
   cmd->add_option("--out", opts->out_dir, "output folder")->capture_default_str();
+  cmd->add_option("--dump-rays", opts->dump_rays,
+                  "write every traced ray (primary, bounce, shadow) to this ray file");
   add_scene_build_options(cmd, opts->source);
   cmd->callback([opts] { run_render(*opts); });
 }

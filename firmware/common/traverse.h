@@ -5,7 +5,8 @@
 //   pop:   stack >>= 1
 // After a child's subtree is done, the top bit says which child was taken first. If that is
 // the side just finished, the other child is visited when its box is still hit closer than
-// the current closest hit; otherwise both are done: pop and go up to the parent.
+// the current closest hit; otherwise both are done: pop and go up to the parent. When only
+// one child's box was hit, the bit names the other child, so its return pops at once.
 //
 // Freestanding and templated on two policies so the firmware, the native twin and host
 // tools share it without virtual calls:
@@ -93,7 +94,10 @@ inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray
       const bool hit1 = detail::child_box_hit(n, 1, box_ray, &t1);
       if (hit0 || hit1) {
         go = (hit0 && (!hit1 || t0 <= t1)) ? 0 : 1;
-        stack = (stack << 1) | (go == 0 ? 1u : 0u);
+        // With one child hit, the bit names the other side, as if it had gone first: the
+        // return then pops at once instead of re-testing a box that already missed.
+        const int first = (hit0 && hit1) ? go : 1 - go;
+        stack = (stack << 1) | (first == 0 ? 1u : 0u);
       }
     } else {
       const int first = (stack & 1u) ? 0 : 1;

@@ -3,7 +3,9 @@
 // general-purpose instructions. Built natively, it is the native twin (the golden model).
 //
 // `Machine` supplies the STRaTA intrinsics the kernel needs (here only the global-register
-// atomic increment); natively a plain counter, on RISC-V the custom instruction.
+// atomic increment; natively a plain counter, on RISC-V the custom instruction) and a hook
+// `ray_issued(ray, type)` that sees every ray before it is traced (a no-op on RISC-V; the
+// host uses it to record the rays for replay in other tracers).
 #pragma once
 
 #include "firmware/kernels/path_shading.h"
@@ -27,7 +29,9 @@ struct CountingObserver {
 };
 
 // One sample of one pixel, traced to the end of its path.
-inline Vec3f trace_sample(const KernelContext& ctx, uint32_t pixel, uint32_t sample_index) {
+template <class Machine>
+inline Vec3f trace_sample(Machine& machine, const KernelContext& ctx, uint32_t pixel,
+                          uint32_t sample_index) {
   const FrameParams& f = *ctx.frame;
   const uint32_t root = ctx.scene.header().root_node;
   CountingObserver obs{ctx.counters};
@@ -36,6 +40,7 @@ inline Vec3f trace_sample(const KernelContext& ctx, uint32_t pixel, uint32_t sam
   uint32_t type = kPrimaryRay;
   for (;;) {
     ++ctx.counters->rays[type];
+    machine.ray_issued(ray, type);
     const ClosestHit hit = trace_closest(ctx.scene, root, ray, obs);
     if (!hit.hit) {
       shade_miss(ctx.scene, &path);
@@ -46,6 +51,7 @@ inline Vec3f trace_sample(const KernelContext& ctx, uint32_t pixel, uint32_t sam
         shade_hit(ctx.scene, f, ray, hit, ctx.scene.triangle(hit.triangle_offset), &path);
     if (s.has_shadow_ray) {
       ++ctx.counters->rays[kShadowRay];
+      machine.ray_issued(s.shadow_ray, kShadowRay);
       if (trace_any(ctx.scene, root, s.shadow_ray, obs).hit)
         ++ctx.counters->hits[kShadowRay];
       else
@@ -71,7 +77,7 @@ inline void baseline_kernel(Machine& machine, const KernelContext& ctx) {
     if (pixel >= pixels) break;
     Vec3f sum{0.0f, 0.0f, 0.0f};
     for (uint32_t s = 0; s < f.samples_per_pixel; ++s)
-      sum = sum + trace_sample(ctx, pixel, pixel * f.samples_per_pixel + s);
+      sum = sum + trace_sample(machine, ctx, pixel, pixel * f.samples_per_pixel + s);
     const Vec3f avg = sum * inv_spp;
     ctx.framebuffer[pixel] = {{avg.x, avg.y, avg.z}};
   }
