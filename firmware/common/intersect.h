@@ -2,11 +2,18 @@
 // model, the firmware (RISC-V and native twin) and the host tools all call these functions,
 // so all of them compute bit-identical results. Freestanding: no library calls.
 //
-// Floating-point rules (see docs/numerics.md):
+// Floating-point rules (docs/numerics.md gives the full semantics and the proofs):
 // - Operation order is fixed by the source; the build uses -ffp-contract=off everywhere.
+//   Round to nearest even, gradual underflow, no fast-math: every argument below relies on
+//   rounding being monotone and symmetric (fl(-x) = -fl(x)).
 // - max_ignore_nan / min_ignore_nan below define NaN behaviour explicitly: a NaN candidate
 //   never replaces the running value. The compiler may not reorder these comparisons.
+// - Non-finite input: a ray with a non-finite origin or direction, or a triangle with a
+//   non-finite vertex, never hits. intersect_box rejects such a ray at once, so traversal
+//   does not visit the tree.
 #pragma once
+
+#include <stdint.h>
 
 #include "firmware/common/vec3.h"
 
@@ -17,10 +24,14 @@ inline float max_ignore_nan(float m, float x) { return x > m ? x : m; }
 // Running minimum that ignores a NaN candidate.
 inline float min_ignore_nan(float m, float x) { return x < m ? x : m; }
 
-// Multiplying the far distance by 1 + 3 * 2^-23 covers the rounding error of the slab
-// computation (Ize 2013, "Robust BVH Ray Traversal"), so traversal never culls a box the
-// ray really hits. The near distance is left as is: a box entered slightly early is harmless.
-constexpr float kFarPad = 1.00000036f;
+// Conservative far distance (Ize 2013, "Robust BVH Ray Traversal"). With u = 2^-24, a slab
+// distance (plane - o) * inv_dir carries three roundings, so a computed near distance is at
+// most (1+u)^3 times the real one and a computed far distance at least (1-u)^3 times it;
+// the multiplication by the pad rounds once more. The pad must satisfy
+// pad * (1-u)^4 >= (1+u)^3, i.e. pad >= 1 + 7u + O(u^2); the smallest float that does is
+// 1 + 8u = 1 + 2^-21. (1 + 6u, the usual 1 + 2*gamma_3, misses the last rounding.)
+// The near distance is left as is: a box entered slightly early is harmless.
+constexpr float kFarPad = 0x1.000008p+0f;  // 1 + 2^-21 = 1.000000476837158
 
 // Ray in the form the box pipeline consumes: origin, inverse direction, [tmin, tmax].
 struct BoxRay {
@@ -29,14 +40,34 @@ struct BoxRay {
   float tmin, tmax;
 };
 
-// Inverse direction with IEEE semantics: a zero component gives +-inf of the zero's sign.
+// Inverse direction with IEEE semantics: a zero component gives +-inf of the zero's sign,
+// an infinite component gives 0, a NaN gives NaN (intersect_box rejects the last two).
 inline Vec3f inverse_direction(Vec3f d) { return {1.0f / d.x, 1.0f / d.y, 1.0f / d.z}; }
+
+// True for every finite float, false for +-inf and NaN (x - x is NaN for those).
+inline bool is_finite_float(float x) { return x - x == 0.0f; }
+
+// A box ray is usable when its origin is finite and no inverse-direction component is NaN
+// (NaN direction) or zero (infinite direction). +-inf components (zero direction) are fine.
+inline bool box_ray_is_valid(const BoxRay& r) {
+  const bool origin_ok =
+      is_finite_float(r.origin.x) && is_finite_float(r.origin.y) && is_finite_float(r.origin.z);
+  const bool inv_ok = (r.inv_dir.x == r.inv_dir.x && r.inv_dir.x != 0.0f) &&
+                      (r.inv_dir.y == r.inv_dir.y && r.inv_dir.y != 0.0f) &&
+                      (r.inv_dir.z == r.inv_dir.z && r.inv_dir.z != 0.0f);
+  return origin_ok && inv_ok;
+}
 
 // Slab test in the style of Williams et al. (2005): the sign of each inverse direction picks
 // which plane is near, so no per-axis min/max of t values is needed.
 // When a direction component is zero and the origin lies exactly on that slab plane,
 // (plane - origin) * inv_dir is 0 * inf = NaN: the ray runs inside the plane, and ignoring
-// the NaN treats that axis as unbounded, which is the conservative (closed box) answer.
+// the NaN treats that axis as unbounded, which is the conservative (closed box) answer. For a
+// flat box (bmin == bmax on that axis) both distances are NaN and the axis is unbounded too.
+// A parallel ray off the plane gets +-inf distances, which decide the axis exactly.
+// Conservative: whenever the real ray segment [max(tmin,0), tmax] touches the closed box,
+// the test returns true (docs/numerics.md, "Box test"). An invalid ray (box_ray_is_valid)
+// or a NaN tmin/tmax returns false.
 // Returns true on overlap of [tmin, tmax] with the box; *t_entry gets the entry distance.
 inline bool intersect_box(const float bmin[3], const float bmax[3], const BoxRay& ray,
                           float* t_entry) {
@@ -54,40 +85,149 @@ inline bool intersect_box(const float bmin[3], const float bmax[3], const BoxRay
     t_far = min_ignore_nan(t_far, t1);
   }
   *t_entry = t_near;
-  return t_near <= t_far;
+  return box_ray_is_valid(ray) && t_near <= t_far;
 }
 
-// Result of the division-free triangle stage: the Plücker edge terms and the numerator and
+// Result of the division-free triangle stage: the edge terms and the numerator and
 // denominator of t. Produced by the fused triangle pipeline; finished only on a hit.
 struct TrianglePartial {
   float e0, e1, e2;  // edge terms; e_i weights vertex i
   float t_num, t_den;
 };
 
-// Plücker-coordinate ray-triangle test without a division. Vertices are first translated
-// to the ray origin. The term of edge (a, b) is dot(d, cross(a', b')); a neighbouring
-// triangle that shares the edge as (b, a) computes cross(b', a') = -cross(a', b') exactly
-// (round-to-nearest is symmetric), so a ray through a shared edge gets terms of opposite
-// sign from the two triangles and can never slip between them (watertight).
-// A hit needs all three terms of one sign (zeros allowed on either side), a non-zero sum,
-// and the plane in front of the origin. The degenerate case (all terms zero: the ray lies in
-// the triangle's plane, or the triangle has no area) is a miss.
+namespace detail {
+
+inline float abs_f(float x) { return x < 0.0f ? -x : x; }
+
+// The rounding error of a product: a*b - fl(a*b), exactly (Dekker 1971, Veltkamp splitting;
+// no FMA). Exact when |a|, |b| < 2^115 and the exponents of a and b sum to at least -103
+// (|a*b| >~ 2^-102); p must be fl(a*b). The operands are put in a fixed order first, so
+// product_error(a, b, p) == product_error(b, a, p) bitwise even outside that range.
+inline float product_error(float a, float b, float p) {
+  if (b < a) {
+    const float s = a;
+    a = b;
+    b = s;
+  }
+  const float kSplit = 4097.0f;  // 2^12 + 1
+  const float ca = kSplit * a;
+  const float ah = ca - (ca - a);
+  const float al = a - ah;
+  const float cb = kSplit * b;
+  const float bh = cb - (cb - b);
+  const float bl = b - bh;
+  return al * bl - (((p - ah * bh) - al * bh) - ah * bl);
+}
+
+// Edge function of the projected points i and j: x_i * y_j - y_i * x_j, with the exact sign.
+// Rounding is monotone, so fl(x_i*y_j) and fl(y_i*x_j) are ordered like the exact products
+// (or equal): a non-zero difference has the exact sign. When they round to the same value,
+// the exact value is the difference of the two rounding errors, computed exactly above; its
+// rounded difference again has the exact sign. Antisymmetric bit for bit:
+// edge_function(j, i) == -edge_function(i, j), since products commute and a - b == -(b - a).
+inline float edge_function(float xi, float yi, float xj, float yj) {
+  const float p = xi * yj;
+  const float q = yi * xj;
+  const float e = p - q;
+  if (e != 0.0f) return e;  // also NaN (inf - inf, NaN input)
+  return product_error(xi, yj, p) - product_error(yi, xj, q);
+}
+
+// Exact powers of two that normalise a direction: for m = |dir[kz]| with biased exponent
+// E (clamped to [1, 253]), *scale = 2^(127-E) and *unscale = 2^(E-127), so
+// scale * unscale == 1 exactly and 1 <= m * scale < 4 for normal m (< 2 unless m >= 2^127).
+// Built from the exponent bits: no division, no library call.
+inline void direction_scale(float m, float* scale, float* unscale) {
+  uint32_t bits;
+  __builtin_memcpy(&bits, &m, sizeof bits);
+  uint32_t exponent = (bits >> 23) & 0xFFu;
+  if (exponent < 1u) exponent = 1u;
+  if (exponent > 253u) exponent = 253u;
+  const uint32_t scale_bits = (254u - exponent) << 23;
+  const uint32_t unscale_bits = exponent << 23;
+  __builtin_memcpy(scale, &scale_bits, sizeof scale_bits);
+  __builtin_memcpy(unscale, &unscale_bits, sizeof unscale_bits);
+}
+
+inline float component(Vec3f v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+
+constexpr float kMinNormal = 0x1p-126f;
+
+}  // namespace detail
+
+// Watertight ray-triangle test without a division: the Plücker edge terms evaluated in the
+// ray's own sheared frame (as in Woop, Benthin and Wald 2013, but multiplying instead of
+// dividing), so that every sign is exact.
+//  1. kz is the axis of the largest |dir| component (ties: z, then y, then x); kx, ky follow
+//     it cyclically and are swapped when dir[kz] < 0, so the frame keeps the handedness.
+//     d = dir * 2^-k with 2^k <= |dir[kz]| < 2^(k+1), an exact scaling (direction_scale):
+//     1 <= |d[kz]| < 2, so the terms do not depend on the length of dir.
+//  2. Every vertex is translated to the ray origin, a = v - origin, and projected along d:
+//       x = d[kz]*a[kx] - d[kx]*a[kz],  y = d[kz]*a[ky] - d[ky]*a[kz],  depth = dot(a, d).
+//     (x, y) are two components of d x a: exactly the Plücker products of the ray with the
+//     vertex. The projection of a vertex depends only on the vertex and the ray, so every
+//     triangle sharing the vertex sees the same rounded point.
+//  3. The term of edge (i, j) is the 2D cross product x_i*y_j - y_i*x_j = |d[kz]| times the
+//     Plücker term dot(d, cross(a_i, a_j)), evaluated with its exact sign (edge_function).
+//     A neighbour sharing the edge as (j, i) gets exactly the negated value.
+// So the test is the exact point-in-triangle test of the projected origin against a fixed,
+// consistently rounded projection of the mesh: no ray slips through a shared edge or a
+// shared vertex of a closed mesh (docs/numerics.md, "Watertightness").
+// A hit needs all three terms of one sign (zeros allowed on either side), a sum det that is
+// finite with |det| >= 2^-126 (det == 0: the ray lies in the triangle's plane or the
+// triangle has no area), and the plane strictly in front of the origin (t_num and t_den of
+// one sign, both finite). NaN or infinite input fails one of these, so it never hits, and a
+// reported hit always finishes to a finite t > 0 and barycentrics in [0, 1].
 inline bool triangle_hit_test(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f origin, Vec3f dir,
                               TrianglePartial* out) {
+  const float adx = detail::abs_f(dir.x);
+  const float ady = detail::abs_f(dir.y);
+  const float adz = detail::abs_f(dir.z);
+  int kz = 2;
+  if (!(adz >= adx && adz >= ady)) kz = (ady >= adx) ? 1 : 0;
+  int kx = kz == 2 ? 0 : kz + 1;
+  int ky = kx == 2 ? 0 : kx + 1;
+  const float dkz_raw = detail::component(dir, kz);
+  if (dkz_raw < 0.0f) {
+    const int s = kx;
+    kx = ky;
+    ky = s;
+  }
+  float scale, unscale;
+  detail::direction_scale(detail::abs_f(dkz_raw), &scale, &unscale);
+  const Vec3f d = dir * scale;  // exact unless a component drops below 2^-126
+  const float dx = detail::component(d, kx);
+  const float dy = detail::component(d, ky);
+  const float dz = detail::component(d, kz);
+
   const Vec3f a = v0 - origin;
   const Vec3f b = v1 - origin;
   const Vec3f c = v2 - origin;
-  const float e0 = dot(dir, cross(b, c));
-  const float e1 = dot(dir, cross(c, a));
-  const float e2 = dot(dir, cross(a, b));
+  const float ax = dz * detail::component(a, kx) - dx * detail::component(a, kz);
+  const float ay = dz * detail::component(a, ky) - dy * detail::component(a, kz);
+  const float bx = dz * detail::component(b, kx) - dx * detail::component(b, kz);
+  const float by = dz * detail::component(b, ky) - dy * detail::component(b, kz);
+  const float cx = dz * detail::component(c, kx) - dx * detail::component(c, kz);
+  const float cy = dz * detail::component(c, ky) - dy * detail::component(c, kz);
+
+  const float e0 = detail::edge_function(bx, by, cx, cy);  // edge v1 -> v2, weights v0
+  const float e1 = detail::edge_function(cx, cy, ax, ay);  // edge v2 -> v0, weights v1
+  const float e2 = detail::edge_function(ax, ay, bx, by);  // edge v0 -> v1, weights v2
   const bool all_nonneg = e0 >= 0.0f && e1 >= 0.0f && e2 >= 0.0f;
   const bool all_nonpos = e0 <= 0.0f && e1 <= 0.0f && e2 <= 0.0f;
+  if (!(all_nonneg || all_nonpos)) return false;  // NaN terms miss here
   const float det = (e0 + e1) + e2;
-  if (!(all_nonneg || all_nonpos) || !(det != 0.0f)) return false;  // NaN terms miss here
+  // One sign, so det is 0 only if all terms are; finite det means finite terms.
+  const float abs_det = detail::abs_f(det);
+  if (!(abs_det >= detail::kMinNormal && is_finite_float(det))) return false;
   // The hit point relative to the origin is (e0 a + e1 b + e2 c) / det, and t is its
-  // projection on d divided by |d|^2: interpolating projections keeps t accurate.
-  const float t_num = (e0 * dot(a, dir) + e1 * dot(b, dir)) + e2 * dot(c, dir);
-  const float t_den = det * dot(dir, dir);
+  // projection on d divided by |d|^2: interpolating projections keeps t accurate. The
+  // factor 2^k turns t along d back into t along dir (exact).
+  const float t_num = (e0 * dot(a, d) + e1 * dot(b, d)) + e2 * dot(c, d);
+  const float t_den = (det * dot(d, d)) * unscale;
+  if (!(is_finite_float(t_num) && is_finite_float(t_den) &&
+        detail::abs_f(t_den) >= detail::kMinNormal))
+    return false;
   // In front of the origin: t_num and t_den of one sign (t_den is non-zero here).
   if (!(t_den > 0.0f ? t_num > 0.0f : t_num < 0.0f)) return false;
   out->e0 = e0;
@@ -103,7 +243,8 @@ struct TriangleHit {
   float b1, b2;  // barycentric weights of v1 and v2 (v0 gets 1 - b1 - b2)
 };
 
-// The division stage, run only after triangle_hit_test succeeded.
+// The division stage, run only after triangle_hit_test succeeded. The terms share det's sign
+// and 2^-126 <= |det| < inf, so 1/det is finite and b1, b2 lie in [0, 1] (up to one rounding).
 inline TriangleHit triangle_finish(const TrianglePartial& p) {
   const float det = (p.e0 + p.e1) + p.e2;
   const float inv_det = 1.0f / det;

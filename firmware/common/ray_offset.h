@@ -49,10 +49,12 @@ inline Vec3f offset_ray_origin(Vec3f p, Vec3f n) {
   if (abs_f(n.y) > m) m = abs_f(n.y);
   if (abs_f(n.z) > m) m = abs_f(n.z);
   if (!(m > 0.0f)) return p;
+  if (m < 0x1p-100f) {  // tiny or subnormal: scale up exactly first, so 1/m stays finite
+    n = n * 0x1p+100f;
+    m = m * 0x1p+100f;
+  }
   const float inv_m = 1.0f / m;
   const Vec3f u = {n.x * inv_m, n.y * inv_m, n.z * inv_m};  // max |u_i| = 1 (within rounding)
-  // A subnormal m can make inv_m infinite; then the components are +-inf, 0 or NaN.
-  if (!(finite_f(u.x) && finite_f(u.y) && finite_f(u.z))) return p;
   return {offset_coordinate(p.x, u.x), offset_coordinate(p.y, u.y), offset_coordinate(p.z, u.z)};
 }
 

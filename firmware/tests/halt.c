@@ -1,0 +1,10 @@
+/* Ends with strata.halt instead of returning, as a thread on the chip does. */
+#include "strata_runtime.h"
+#include "firmware/common/strata_isa.h"
+
+volatile uint32_t result;
+
+int main(void) {
+  result = 42;
+  strata_halt();
+}

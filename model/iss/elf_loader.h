@@ -1,0 +1,39 @@
+// Reads a little-endian ELF32 RISC-V executable: its PT_LOAD segments, entry point and
+// symbol table. Every error names the file.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace strata::iss {
+
+class ElfError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ElfSegment {
+  uint32_t vaddr = 0;
+  uint32_t memsz = 0;             // bytes in memory; the tail past the file bytes is zero
+  std::vector<uint8_t> bytes;     // p_filesz bytes from the file
+  bool executable = false;
+  bool writable = false;
+};
+
+struct ElfImage {
+  std::string path;
+  uint32_t entry = 0;
+  std::vector<ElfSegment> segments;  // PT_LOAD with memsz > 0, in file order
+  std::unordered_map<std::string, uint32_t> symbols;  // defined symbols; globals win over locals
+
+  std::optional<uint32_t> symbol(const std::string& name) const;
+};
+
+ElfImage load_elf(const std::string& path);
+ElfImage parse_elf(const std::string& path, const std::vector<uint8_t>& file);  // path for messages
+
+}  // namespace strata::iss

@@ -1,0 +1,7 @@
+#include "model/iss/hart_impl.h"
+
+namespace strata::iss {
+
+template class Hart<FlatMemory>;
+
+}  // namespace strata::iss
