@@ -1,5 +1,6 @@
-// `strata-sim render <scene>`: renders a frame with the native twin (the baseline firmware
-// kernel compiled for the host) and writes EXR, PNG preview and statistics JSON.
+// `strata-sim render <scene>`: renders a frame with the baseline firmware kernel, either as
+// the native twin (compiled for the host) or as RISC-V firmware on one functional ISS hart,
+// and writes EXR, PNG preview and statistics JSON named after the engine.
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -9,6 +10,7 @@
 
 #include "sim/commands.h"
 #include "sim/image_output.h"
+#include "sim/iss_render.h"
 #include "sim/native_render.h"
 #include "sim/ray_file.h"
 #include "sim/resolution.h"
@@ -22,19 +24,27 @@ struct RenderOptions {
   std::string resolution = "512x512";
   RenderSettings settings;
   float exposure = 1.0f;
-  std::string out_dir = "out/native";
+  std::string out_dir = "out/render";
   std::string dump_rays;  // ray file of every traced ray, for replay in other tracers
+  std::string engine = "native";
+  std::string firmware;  // kernel ELF for --engine iss; default: the one this tree built
+  uint64_t max_instructions = UINT64_MAX;
 };
 
-nlohmann::json stats_json(const RenderOptions& o, const RenderResult& r) {
+const char* engine_description(const std::string& engine) {
+  return engine == "iss" ? "functional, untimed: the baseline firmware on one RV32IMF ISS hart"
+                         : "functional, untimed: the baseline kernel on one host thread";
+}
+
+nlohmann::json stats_json(const RenderOptions& o, const RenderResult& r, const IssRunStats* iss) {
   using kernels::kBounceRay;
   using kernels::kPrimaryRay;
   using kernels::kShadowRay;
   const auto& c = r.counters;
   const double rays = double(r.total_rays());
   nlohmann::json j;
-  j["mode"] = "native-twin";
-  j["mode_description"] = "functional, untimed: the baseline kernel on one host thread";
+  j["mode"] = o.engine == "iss" ? "iss-functional" : "native-twin";
+  j["mode_description"] = engine_description(o.engine);
   j["scene"] = o.source.scene;
   j["width"] = o.settings.width;
   j["height"] = o.settings.height;
@@ -50,11 +60,22 @@ nlohmann::json stats_json(const RenderOptions& o, const RenderResult& r) {
   j["triangle_tests_per_ray"] = rays > 0 ? double(c.triangle_tests) / rays : 0.0;
   j["wall_seconds"] = r.seconds;
   j["mrays_per_second"] = r.seconds > 0 ? rays / r.seconds * 1e-6 : 0.0;
+  if (iss) {
+    j["firmware"] = o.firmware;
+    j["instructions"] = iss->instructions;
+    j["mips"] = iss->mips();
+    for (unsigned k = 0; k < iss::kClassCount; ++k)
+      if (iss->counters.by_class[k])
+        j["instruction_mix"][iss::class_name(iss::InstrClass(k))] = iss->counters.by_class[k];
+    j["register_file"] = {{"int_reads", iss->counters.int_reads}, {"int_writes", iss->counters.int_writes},
+                          {"fp_reads", iss->counters.fp_reads}, {"fp_writes", iss->counters.fp_writes}};
+  }
   return j;
 }
 
-void print_summary(const nlohmann::json& j, const std::string& dir) {
-  std::printf("mode           native twin (functional, untimed; 1 host thread)\n");
+void print_summary(const nlohmann::json& j, const std::string& dir, const std::string& engine) {
+  std::printf("mode           %s (%s)\n", j["mode"].get<std::string>().c_str(),
+              j["mode_description"].get<std::string>().c_str());
   std::printf("frame          %ux%u, %u spp, at most %u path vertices, seed %u\n",
               j["width"].get<unsigned>(), j["height"].get<unsigned>(),
               j["samples_per_pixel"].get<unsigned>(), j["max_path_vertices"].get<unsigned>(),
@@ -71,25 +92,41 @@ void print_summary(const nlohmann::json& j, const std::string& dir) {
               j["node_visits_per_ray"].get<double>(), j["triangle_tests_per_ray"].get<double>());
   std::printf("speed          %.2f MRays/s (wall clock, %.2f s, kernel only, 1 thread)\n",
               j["mrays_per_second"].get<double>(), j["wall_seconds"].get<double>());
-  std::printf("wrote          %s/native.exr, native.png, native-stats.json\n", dir.c_str());
+  if (j.contains("instructions"))
+    std::printf("iss            %llu instructions retired, %.0f MIPS (wall clock)\n",
+                j["instructions"].get<unsigned long long>(), j["mips"].get<double>());
+  std::printf("wrote          %s/%s.exr, %s.png, %s-stats.json\n", dir.c_str(), engine.c_str(),
+              engine.c_str(), engine.c_str());
 }
 
 void run_render(RenderOptions o) {
+  if (o.engine != "native" && o.engine != "iss")
+    throw std::invalid_argument("engine: '" + o.engine + "' is not native or iss");
+  if (o.engine == "iss" && !o.dump_rays.empty())
+    throw std::invalid_argument("dump-rays: only the native engine records rays");
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
   if (!(o.exposure > 0.0f)) throw std::invalid_argument("exposure: must be positive");
   const LoadedScene loaded = load_scene_and_image(o.source);
   std::vector<TraceRay> rays;
-  const RenderResult r = render_native(loaded.image, o.settings, o.dump_rays.empty() ? nullptr : &rays);
+  IssRunStats iss_stats;
+  RenderResult r;
+  if (o.engine == "iss") {
+    if (o.firmware.empty()) o.firmware = default_kernel_elf("baseline");
+    r = render_on_iss(loaded.image, o.settings, o.firmware, o.max_instructions, &iss_stats);
+  } else {
+    r = render_native(loaded.image, o.settings, o.dump_rays.empty() ? nullptr : &rays);
+  }
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
-  write_exr(dir / "native.exr", o.settings.width, o.settings.height, r.image);
-  write_png_preview(dir / "native.png", o.settings.width, o.settings.height, r.image, o.exposure);
-  const nlohmann::json j = stats_json(o, r);
-  std::ofstream out(dir / "native-stats.json");
+  write_exr(dir / (o.engine + ".exr"), o.settings.width, o.settings.height, r.image);
+  write_png_preview(dir / (o.engine + ".png"), o.settings.width, o.settings.height, r.image, o.exposure);
+  const nlohmann::json j = stats_json(o, r, o.engine == "iss" ? &iss_stats : nullptr);
+  const std::filesystem::path stats_file = dir / (o.engine + "-stats.json");
+  std::ofstream out(stats_file);
   out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error((dir / "native-stats.json").string() + ": cannot write");
-  print_summary(j, dir.string());
+  if (!out) throw std::runtime_error(stats_file.string() + ": cannot write");
+  print_summary(j, dir.string(), o.engine);
   if (!o.dump_rays.empty()) {
     std::vector<RayRecord> records(rays.size());
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -104,7 +141,7 @@ void run_render(RenderOptions o) {
 }  // namespace
 
 void add_render_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("render", "Render a frame with the native twin (golden reference)");
+  auto* cmd = app.add_subcommand("render", "Render a frame with the native twin or the firmware on the ISS");
   auto opts = std::make_shared<RenderOptions>();
   cmd->add_option("scene", opts->source.scene,
                   "scene.json, mesh (.obj/.gltf/.glb), or cornell|hairball|vegetation[:size=F,seed=N]|sibenik")
@@ -116,6 +153,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--seed", opts->settings.seed, "random seed of the frame")->capture_default_str();
   cmd->add_option("--exposure", opts->exposure, "PNG preview exposure multiplier")->capture_default_str();
   cmd->add_option("--out", opts->out_dir, "output folder")->capture_default_str();
+  cmd->add_option("--engine", opts->engine,
+                  "native: the kernel compiled for the host (native twin); iss: the RISC-V firmware on one ISS hart")
+      ->capture_default_str();
+  cmd->add_option("--firmware", opts->firmware, "kernel ELF for --engine iss (default: the baseline kernel built here)");
+  cmd->add_option("--max-instructions", opts->max_instructions, "stop the ISS after this many instructions");
   cmd->add_option("--dump-rays", opts->dump_rays,
                   "write every traced ray (primary, bounce, shadow) to this ray file");
   add_scene_build_options(cmd, opts->source);

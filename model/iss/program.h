@@ -20,13 +20,17 @@ struct Program {
   FlatMemory memory;
   CodeImage code;
   uint32_t entry = 0;
-  uint32_t stack_top = 0;  // 16-byte aligned end of the memory region
+  uint32_t stack_top = 0;  // 16-byte aligned top of the stack, above the segments
+  uint32_t data_base = 0;  // start of the platform's data region above the stack (1 MiB aligned)
   std::optional<uint32_t> tohost;
 };
 
-// Throws ElfError (naming the file) for unreadable or unsuitable executables.
-Program load_program(const std::string& path, uint32_t stack_bytes = kDefaultStackBytes);
-Program make_program(ElfImage elf, uint32_t stack_bytes = kDefaultStackBytes);
+// Throws ElfError (naming the file) for unreadable or unsuitable executables. `data_bytes`
+// of zeroed memory follow the stack, for what the platform hands the program (scene, frame).
+Program load_program(const std::string& path, uint32_t stack_bytes = kDefaultStackBytes,
+                     uint32_t data_bytes = 0);
+Program make_program(ElfImage elf, uint32_t stack_bytes = kDefaultStackBytes,
+                     uint32_t data_bytes = 0);
 
 // pc = entry, sp = stack top, and the tohost convention if the program has the symbol.
 void prepare_hart(Hart<FlatMemory>& hart, const Program& program);

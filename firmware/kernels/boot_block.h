@@ -1,0 +1,19 @@
+// Where a kernel finds its inputs in guest memory. The firmware defines one BootBlock named
+// `strata_boot` in .data; the platform (ISS driver or chip model) finds it by that symbol
+// and fills it in before the first thread starts.
+#pragma once
+
+#include <stdint.h>
+
+namespace strata::kernels {
+
+struct BootBlock {
+  uint32_t frame_params;  // guest address of the FrameParams
+  uint32_t scene_image;   // guest address of the scene image (aligned to its treelet size)
+  uint32_t framebuffer;   // width * height Pixels
+  uint32_t counters;      // one RayCounters per thread, indexed by the global thread id
+};
+
+constexpr const char* kBootBlockSymbol = "strata_boot";
+
+}  // namespace strata::kernels

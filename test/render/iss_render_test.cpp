@@ -1,0 +1,59 @@
+// The baseline kernel built as RISC-V firmware and run on the ISS computes exactly what the
+// native twin computes: bit-identical images and identical ray statistics.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+
+#include "scenes/procedural/procedural.h"
+#include "scenes/scene_spec.h"
+#include "sim/iss_render.h"
+
+namespace strata::sim {
+namespace {
+
+void expect_identical(const scenes::Scene& scene, uint32_t size) {
+  const std::string elf = default_kernel_elf("baseline");
+  if (!std::filesystem::exists(elf)) GTEST_SKIP() << "no RISC-V toolchain: " << elf << " was not built";
+  const scenes::SceneImage image = build_scene_image(scene, {}, nullptr);
+  RenderSettings s;
+  s.width = s.height = size;
+  const RenderResult native = render_native(image, s);
+  IssRunStats stats;
+  const RenderResult iss = render_on_iss(image, s, elf, UINT64_MAX, &stats);
+  ASSERT_EQ(native.image.size(), iss.image.size());
+  EXPECT_EQ(std::memcmp(native.image.data(), iss.image.data(), native.image.size() * sizeof(kernels::Pixel)), 0)
+      << "firmware image differs from the native twin";
+  EXPECT_EQ(std::memcmp(&native.counters, &iss.counters, sizeof native.counters), 0)
+      << "firmware ray statistics differ from the native twin";
+  EXPECT_EQ(iss.counters.paths, uint64_t(size) * size);
+  EXPECT_GT(stats.instructions, iss.total_rays() * 100);  // it really ran the kernel
+  EXPECT_GT(stats.counters.fp_reads, 0u);
+}
+
+TEST(IssRender, CornellFirmwareImageIsBitIdenticalToTheNativeTwin) {
+  expect_identical(scenes::make_cornell({0.3, 1}), 64);
+}
+
+TEST(IssRender, SibenikFirmwareImageIsBitIdenticalToTheNativeTwin) {
+  if (!std::filesystem::exists(STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj"))
+    GTEST_SKIP() << "../shared/scenes/sibenik is absent";
+  expect_identical(scenes::load_scene("sibenik", STRATA_SOURCE_DIR), 64);
+}
+
+TEST(IssRender, AFaultingFirmwareIsReportedWithTheElfName) {
+  const std::string elf = default_kernel_elf("baseline");
+  if (!std::filesystem::exists(elf)) GTEST_SKIP() << "no RISC-V toolchain";
+  const scenes::SceneImage image = build_scene_image(scenes::make_cornell({0.1, 1}), {}, nullptr);
+  RenderSettings s;
+  s.width = s.height = 8;
+  try {
+    render_on_iss(image, s, elf, 1000, nullptr);  // far too few instructions
+    FAIL() << "an instruction limit was not reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("baseline.elf"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace strata::sim
