@@ -69,8 +69,10 @@ inline bool box_ray_is_valid(const BoxRay& r) {
 // the test returns true (docs/numerics.md, "Box test"). An invalid ray (box_ray_is_valid)
 // or a NaN tmin/tmax returns false.
 // Returns true on overlap of [tmin, tmax] with the box; *t_entry gets the entry distance.
-inline bool intersect_box(const float bmin[3], const float bmax[3], const BoxRay& ray,
-                          float* t_entry) {
+// intersect_box without the ray validity check, for callers that checked the ray once
+// (traversal tests many boxes with one ray). Same result as intersect_box for a valid ray.
+STRATA_INLINE bool intersect_box_valid_ray(const float bmin[3], const float bmax[3],
+                                           const BoxRay& ray, float* t_entry) {
   const float o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const float inv[3] = {ray.inv_dir.x, ray.inv_dir.y, ray.inv_dir.z};
   float t_near = ray.tmin;
@@ -85,7 +87,13 @@ inline bool intersect_box(const float bmin[3], const float bmax[3], const BoxRay
     t_far = min_ignore_nan(t_far, t1);
   }
   *t_entry = t_near;
-  return box_ray_is_valid(ray) && t_near <= t_far;
+  return t_near <= t_far;
+}
+
+inline bool intersect_box(const float bmin[3], const float bmax[3], const BoxRay& ray,
+                          float* t_entry) {
+  const bool overlap = intersect_box_valid_ray(bmin, bmax, ray, t_entry);
+  return box_ray_is_valid(ray) && overlap;
 }
 
 // Result of the division-free triangle stage: the edge terms and the numerator and

@@ -71,15 +71,17 @@ inline bool test_leaf(const Memory& mem, uint32_t ref, const TraceRay& ray, Clos
   return false;
 }
 
-inline bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_entry) {
+// The ray was checked once by traverse(), so the per-box validity test is skipped.
+STRATA_INLINE bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_entry) {
   if (child_is_leaf(n.child[side]) && leaf_count(n.child[side]) == 0) return false;
-  return intersect_box(n.child_min[side], n.child_max[side], r, t_entry);
+  return intersect_box_valid_ray(n.child_min[side], n.child_max[side], r, t_entry);
 }
 
 template <bool kAnyHit, class Memory, class Observer>
 inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray, Observer& obs) {
   ClosestHit best = {false, ray.tmax, 0.0f, 0.0f, 0u, 0u, 0u};
   BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, ray.tmax};
+  if (!box_ray_is_valid(box_ray)) return best;  // intersect_box would reject every box
   uint32_t node = root;
   uint32_t stack = 0;
   int returning_from = -1;  // -1: entering node; 0 or 1: that child's subtree is done
