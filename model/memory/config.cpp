@@ -1,0 +1,97 @@
+#include "model/memory/config.h"
+
+#include "model/memory/energy_table.h"
+
+#include <stdexcept>
+
+namespace strata::memory {
+
+namespace {
+bool pow2(uint64_t v) { return v != 0 && (v & (v - 1)) == 0; }
+
+[[noreturn]] void bad(const char* field, const std::string& why, uint64_t got) {
+  throw std::invalid_argument(std::string(field) + ": " + why + " (got " + std::to_string(got) + ")");
+}
+void need_pow2(const char* field, uint64_t v) {
+  if (!pow2(v)) bad(field, "must be a power of two", v);
+}
+void need_positive(const char* field, uint64_t v) {
+  if (v == 0) bad(field, "must be > 0", v);
+}
+void need_energy(const char* field, double nj) {
+  if (!(nj >= 0.0)) throw std::invalid_argument(std::string(field) + ": must be >= 0 nJ");
+}
+// Tags and banks use shifts and masks, so the geometry is in powers of two.
+void cache_geometry(const char* cache, uint32_t size, uint32_t banks, uint32_t line, uint32_t ways) {
+  const std::string p(cache);
+  need_pow2((p + ".size_bytes").c_str(), size);
+  need_pow2((p + ".banks").c_str(), banks);
+  need_pow2((p + ".line_bytes").c_str(), line);
+  need_pow2((p + ".ways").c_str(), ways);
+  if (uint64_t{line} * ways * banks > size)
+    bad((p + ".size_bytes").c_str(), "must hold at least one set per bank", size);
+}
+}  // namespace
+
+const char* to_string(SchedulingPolicy p) {
+  return p == SchedulingPolicy::kRoundRobin ? "round-robin" : "fullest-first";
+}
+
+void L1DataCacheConfig::validate() const {
+  cache_geometry("l1d", size_bytes, banks, line_bytes, 1);
+  need_positive("l1d.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_energy("l1d.access_energy_nj", access_energy_nj);
+}
+
+void L1InstructionCacheConfig::validate() const {
+  cache_geometry("l1i", size_bytes, banks, line_bytes, 1);
+  need_positive("l1i.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_energy("l1i.access_energy_nj", access_energy_nj);
+}
+
+void L2Config::validate() const {
+  cache_geometry("l2", size_bytes, banks, line_bytes, ways);
+  need_positive("l2.calendar_horizon_cycles", calendar_horizon_cycles);
+  if (access_energy_nj) need_energy("l2.access_energy_nj", *access_energy_nj);
+  else (void)energy_per_access_nj();  // throws if the size is outside the table
+}
+
+double L2Config::energy_per_access_nj() const {
+  return access_energy_nj ? *access_energy_nj : sram_access_energy_nj(size_bytes);
+}
+
+void StreamMemoryConfig::validate() const {
+  need_positive("stream.treelets", treelets);
+  need_positive("stream.threads", threads);
+  need_positive("stream.tms", tms);
+  need_positive("stream.ports", ports);
+  need_positive("stream.calendar_horizon_cycles", calendar_horizon_cycles);
+  if (access_energy_nj) need_energy("stream.access_energy_nj", *access_energy_nj);
+  else (void)energy_per_access_nj();
+}
+
+double StreamMemoryConfig::energy_per_access_nj() const {
+  return access_energy_nj ? *access_energy_nj : sram_access_energy_nj(size_bytes);
+}
+
+void DramConfig::validate() const {
+  need_positive("dram.channels", channels);
+  need_positive("dram.bytes_per_cycle", bytes_per_cycle);
+  if (bytes_per_cycle % channels != 0)
+    bad("dram.bytes_per_cycle", "must split evenly over dram.channels", bytes_per_cycle);
+  need_pow2("dram.interleave_bytes", interleave_bytes);
+  need_pow2("dram.burst_bytes", burst_bytes);
+  need_positive("dram.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_energy("dram.access_energy_nj", access_energy_nj);
+}
+
+void InterconnectConfig::validate() const {
+  need_positive("interconnect.tm_ports", tm_ports);
+  need_pow2("interconnect.l2_banks", l2_banks);
+  need_pow2("interconnect.l2_line_bytes", l2_line_bytes);
+  need_positive("interconnect.link_bytes_per_cycle", link_bytes_per_cycle);
+  need_positive("interconnect.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_energy("interconnect.transfer_energy_nj", transfer_energy_nj);
+}
+
+}  // namespace strata::memory

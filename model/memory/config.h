@@ -1,0 +1,110 @@
+// Typed configuration of every memory module (in the spirit of DRAMSys: one struct per
+// module, defaults from the STRaTA paper, validated once at construction with errors that
+// name the field). Sizes are bytes, times are cycles of the 1 GHz clock, energies are nJ per
+// access. Every struct has a validate() that throws std::invalid_argument.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace strata::memory {
+
+enum class WritePolicy : uint8_t {
+  // Stores go through to the next level and never allocate; a present line stays valid
+  // (the data lives in the backing store). TRaX's policy; see docs/memory-system.md.
+  kWriteAround,
+};
+
+struct L1DataCacheConfig {
+  uint32_t size_bytes = 32 * 1024;
+  uint32_t banks = 8;
+  uint32_t line_bytes = 64;
+  uint32_t hit_latency_cycles = 1;
+  WritePolicy write_policy = WritePolicy::kWriteAround;
+  uint32_t calendar_horizon_cycles = 4096;  // must exceed the LT quantum + the longest miss
+  // Per access (a lookup, or a line fill), nJ. STRaTA's table (../shared/ARCHITECTURE.md,
+  // CACTI 6.5, 65 nm) leaves the L1 data cache out. This default is derived from that same
+  // table rather than taken from a separate publication: a log-log fit through its 4 KB
+  // I-cache (0.014 nJ) and 512 KB SRAM (0.524 nJ) points, evaluated at 32 KB:
+  // 0.014 * 8^0.7466 = 0.066 nJ. Replace it with a CACTI run of the exact geometry when one
+  // is available (docs/memory-system.md, "Energy").
+  double access_energy_nj = 0.066;
+  void validate() const;
+};
+
+struct L1InstructionCacheConfig {
+  uint32_t size_bytes = 4 * 1024;
+  uint32_t banks = 4;
+  uint32_t line_bytes = 64;
+  uint32_t hit_latency_cycles = 1;
+  // false: every fetch hits (the firmware is a few KB, as TRaX assumed); true: misses go to
+  // the L2 through the downstream socket.
+  bool model_misses = true;
+  uint32_t calendar_horizon_cycles = 4096;
+  double access_energy_nj = 0.014;  // STRaTA table: I-cache 4 KB, CACTI 6.5, 65 nm
+  void validate() const;
+};
+
+struct L2Config {
+  uint32_t size_bytes = 512 * 1024;  // STRaTA 512 KB; the TRaX baseline sweeps 512 KB..16 MB
+  uint32_t banks = 16;
+  uint32_t line_bytes = 64;
+  uint32_t ways = 1;  // 1: direct-mapped; more: set-associative with LRU replacement
+  uint32_t hit_latency_cycles = 3;
+  uint32_t calendar_horizon_cycles = 4096;
+  // Unset: the STRaTA CACTI table entry for size_bytes (sram_access_energy_nj).
+  std::optional<double> access_energy_nj;
+  void validate() const;
+  double energy_per_access_nj() const;
+};
+
+enum class SchedulingPolicy : uint8_t {
+  kFullestFirst,  // a TM that needs a buffer gets the one holding the most rays
+  kRoundRobin,    // buffers are handed out in turn, in the order they became non-empty
+};
+const char* to_string(SchedulingPolicy p);
+
+struct StreamMemoryConfig {
+  uint32_t size_bytes = 512 * 1024;  // S: same sizes as the baseline L2 sweep
+  uint32_t treelets = 1024;          // head pointers carved out of the SRAM
+  uint32_t threads = 4096;           // one "holds a ray" bit per thread, also in the SRAM
+  uint32_t tms = 128;
+  uint32_t ports = 4;                // ray reads/writes per cycle
+  uint32_t access_latency_cycles = 3;
+  uint32_t query_latency_cycles = 1;  // size, assign, capacity: head/count region only
+  SchedulingPolicy policy = SchedulingPolicy::kFullestFirst;
+  bool sticky = true;  // a TM keeps its treelet while that buffer has rays
+  uint32_t calendar_horizon_cycles = 4096;
+  // Unset: the L2 of the same size (STRaTA: a stream access costs about an L2 access).
+  std::optional<double> access_energy_nj;
+  void validate() const;
+  double energy_per_access_nj() const;
+};
+
+struct DramConfig {
+  uint32_t channels = 8;
+  uint32_t bytes_per_cycle = 256;  // total peak: 256 GB/s at 1 GHz, split evenly over channels
+  uint32_t latency_cycles = 100;   // from request to first data, unloaded
+  uint32_t interleave_bytes = 256;  // consecutive blocks of this size go to consecutive channels
+  uint32_t burst_bytes = 64;        // one access moves up to this much; energy is per access
+  uint32_t calendar_horizon_cycles = 16384;
+  double access_energy_nj = 16.3;  // STRaTA table: off-chip DRAM, per access
+  void validate() const;
+  uint32_t channel_bytes_per_cycle() const { return bytes_per_cycle / channels; }
+};
+
+struct InterconnectConfig {
+  uint32_t tm_ports = 128;
+  uint32_t l2_banks = 16;       // must match the L2: requests are routed to bank ports
+  uint32_t l2_line_bytes = 64;  // bank interleaving granule, as in the L2
+  uint32_t link_bytes_per_cycle = 64;
+  uint32_t hop_latency_cycles = 1;  // each way
+  uint32_t calendar_horizon_cycles = 4096;
+  // STRaTA's CACTI figures include the arrays' own routing; the crossbar wires are not in
+  // its table, so they cost nothing unless a figure is given.
+  double transfer_energy_nj = 0.0;
+  void validate() const;
+};
+
+}  // namespace strata::memory

@@ -1,0 +1,28 @@
+#include "model/memory/downstream_port.h"
+
+namespace strata::memory {
+
+DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint32_t bytes, transport::Cycle at,
+                                      const transport::MemoryExtension* origin) {
+  transport::PooledPayload p(pool_);
+  p->set_command(cmd);
+  p->set_address(addr);
+  p->set_data_ptr(scratch_.data());
+  p->set_data_length(bytes);
+  p->set_streaming_width(bytes);
+  transport::MemoryExtension& ext = p.ext();
+  if (origin != nullptr) {
+    ext.initiator_id = origin->initiator_id;
+    ext.tm_id = origin->tm_id;
+  }
+  ext.access = cmd == tlm::TLM_WRITE_COMMAND ? transport::AccessClass::kDataStore : transport::AccessClass::kDataLoad;
+  ext.timing_only = true;
+
+  sc_core::sc_time delay = clock_.delay_until(at);
+  socket_->b_transport(*p, delay);
+  ++requests_;
+  bytes_ += bytes;
+  return DownstreamResult{p->is_response_ok(), clock_.request_cycle(delay), ext.served_by};
+}
+
+}  // namespace strata::memory

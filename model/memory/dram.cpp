@@ -1,0 +1,92 @@
+#include "model/memory/dram.h"
+
+#include <string>
+
+namespace strata::memory {
+
+using transport::Cycle;
+using transport::MemoryExtension;
+
+Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory& backing)
+    : sc_core::sc_module(name), config_((config.validate(), config)), backing_(backing), stats_(basename()) {
+  target.register_b_transport(this, &Dram::b_transport);
+  while ((1u << interleave_shift_) != config_.interleave_bytes) ++interleave_shift_;
+  buses_.reserve(config_.channels);
+  for (uint32_t c = 0; c < config_.channels; ++c)
+    buses_.emplace_back(config_.channel_bytes_per_cycle(), config_.calendar_horizon_cycles);
+  channels_.resize(config_.channels);  // never resized again: the stats point into it
+
+  Counters& t = counters_;
+  stats_.add({{"accesses", &t.accesses}, {"requests", &t.requests}, {"bytes_read", &t.bytes_read},
+              {"bytes_written", &t.bytes_written}});
+  stats_.add("energy_nj", &t.energy_nj);
+  for (uint32_t c = 0; c < config_.channels; ++c) {
+    ChannelCounters& k = channels_[c];
+    auto group = std::make_unique<StatGroup>("channel" + std::to_string(c));
+    group->add({{"accesses", &k.accesses}, {"requests", &k.requests}, {"bytes_read", &k.bytes_read},
+                {"bytes_written", &k.bytes_written}, {"queued_cycles", &k.queued_cycles}});
+    group->add("energy_nj", &k.energy_nj);
+    stats_.add_child(group.get());
+    channel_stats_.push_back(std::move(group));
+    tr_bandwidth_.push_back(trace_.add_rate("channel" + std::to_string(c) + ".bytes_per_cycle"));
+    tr_depth_.push_back(trace_.add_level("channel" + std::to_string(c) + ".queue_cycles"));
+  }
+}
+
+void Dram::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+
+uint64_t Dram::overflow_bookings() const {
+  uint64_t n = 0;
+  for (const auto& b : buses_) n += b.overflow_bookings();
+  return n;
+}
+
+void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
+  MemoryExtension* ext = gp.get_extension<MemoryExtension>();
+  const uint64_t addr = gp.get_address();
+  const uint32_t bytes = gp.get_data_length();
+  if (bytes == 0 || gp.get_command() == tlm::TLM_IGNORE_COMMAND ||
+      (ext != nullptr && transport::is_stream_access(ext->access))) {
+    gp.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return;
+  }
+  const bool write = gp.is_write();
+  if (ext == nullptr || !ext->timing_only) {
+    if (write) backing_.write(addr, gp.get_data_ptr(), bytes);
+    else backing_.read(addr, gp.get_data_ptr(), bytes);
+  }
+
+  // A request is served by the channel of its first byte; caches send aligned lines, which
+  // never straddle an interleave block.
+  const uint32_t ch = channel_of(addr);
+  const Cycle now = clock_.now();
+  const Cycle t = clock_.request_cycle(delay);
+  transport::ReservationCalendar& bus = buses_[ch];
+  bus.retire_before(now);
+  const Cycle data_from = t + config_.latency_cycles;
+  const transport::Booking b = bus.book(data_from, bytes);
+
+  const uint64_t bursts = (bytes + config_.burst_bytes - 1) / config_.burst_bytes;
+  const double energy = static_cast<double>(bursts) * config_.access_energy_nj;
+  const Cycle unloaded = data_from + (bytes + config_.channel_bytes_per_cycle() - 1) / config_.channel_bytes_per_cycle();
+  ChannelCounters& k = channels_[ch];
+  k.accesses += bursts;
+  ++k.requests;
+  (write ? k.bytes_written : k.bytes_read) += bytes;
+  k.queued_cycles += b.end() > unloaded ? b.end() - unloaded : 0;
+  k.energy_nj += energy;
+  counters_.accesses += bursts;
+  ++counters_.requests;
+  (write ? counters_.bytes_written : counters_.bytes_read) += bytes;
+  counters_.energy_nj += energy;
+
+  if (trace_.enabled()) {
+    trace_.count(tr_bandwidth_[ch], bytes, now);
+    trace_.level(tr_depth_[ch], static_cast<double>(bus.backlog_end() > now ? bus.backlog_end() - now : 0), now);
+  }
+  if (ext != nullptr) ext->served_by = transport::ServedBy::kDram;
+  gp.set_response_status(tlm::TLM_OK_RESPONSE);
+  delay = clock_.delay_until(b.end());
+}
+
+}  // namespace strata::memory

@@ -1,0 +1,71 @@
+// Off-chip DRAM: channels interleaved by address, each with a share of the total peak
+// bandwidth, an access latency and queueing under load. The data bus of each channel is a
+// reservation calendar in bytes per cycle: an access asks for its bytes at or after
+// request + latency, so an idle channel answers in latency + bytes/bandwidth and a busy one
+// queues it behind the bytes already booked. Functional data lives in the SparseMemory.
+#pragma once
+
+#include "model/memory/config.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/stats.h"
+#include "model/memory/window_trace.h"
+#include "tlm/clock.h"
+#include "tlm/memory_extension.h"
+#include "tlm/reservation_calendar.h"
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+#include <memory>
+#include <vector>
+
+namespace strata::memory {
+
+class Dram : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<Dram> target{"target"};
+
+  struct ChannelCounters {
+    uint64_t accesses = 0;  // bursts of up to burst_bytes
+    uint64_t requests = 0;
+    uint64_t bytes_read = 0, bytes_written = 0;
+    uint64_t queued_cycles = 0;  // waiting for the bus beyond the unloaded latency
+    double energy_nj = 0.0;
+  };
+  struct Counters {
+    uint64_t accesses = 0, requests = 0, bytes_read = 0, bytes_written = 0;
+    double energy_nj = 0.0;
+  };
+
+  Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory& backing);
+
+  uint32_t channel_of(uint64_t addr) const {
+    return static_cast<uint32_t>((addr >> interleave_shift_) % config_.channels);
+  }
+  const Counters& counters() const { return counters_; }
+  const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
+  const StatGroup& stats() const { return stats_; }
+  const DramConfig& config() const { return config_; }
+  SparseMemory& backing() { return backing_; }
+  uint64_t overflow_bookings() const;
+  // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead).
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
+
+  DramConfig config_;
+  SparseMemory& backing_;
+  transport::Clock clock_;
+  uint32_t interleave_shift_ = 0;
+  std::vector<transport::ReservationCalendar> buses_;
+  std::vector<ChannelCounters> channels_;
+  Counters counters_;
+  StatGroup stats_;
+  std::vector<std::unique_ptr<StatGroup>> channel_stats_;
+  WindowTrace trace_;
+  std::vector<std::size_t> tr_bandwidth_, tr_depth_;
+};
+
+}  // namespace strata::memory

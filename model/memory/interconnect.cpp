@@ -1,0 +1,86 @@
+#include "model/memory/interconnect.h"
+
+#include <algorithm>
+
+namespace strata::memory {
+
+using transport::Cycle;
+using transport::MemoryExtension;
+
+Interconnect::Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config)
+    : sc_core::sc_module(name), config_((config.validate(), config)), stats_(basename()) {
+  tm_side.register_b_transport(this, &Interconnect::b_transport);
+  while ((1u << line_shift_) != config_.l2_line_bytes) ++line_shift_;
+  tm_ports_.reserve(config_.tm_ports);
+  for (uint32_t p = 0; p < config_.tm_ports; ++p) tm_ports_.emplace_back(1, config_.calendar_horizon_cycles);
+  links_.reserve(config_.l2_banks + 1);
+  for (uint32_t l = 0; l <= config_.l2_banks; ++l) links_.emplace_back(1, config_.calendar_horizon_cycles);
+  Counters& c = counters_;
+  stats_.add({{"transfers", &c.transfers}, {"bytes", &c.bytes}, {"l2_transfers", &c.l2_transfers},
+              {"stream_transfers", &c.stream_transfers}, {"port_conflicts", &c.port_conflicts},
+              {"link_conflicts", &c.link_conflicts}, {"conflict_cycles", &c.conflict_cycles}});
+  stats_.add("energy_nj", &c.energy_nj);
+  tr_bytes_ = trace_.add_rate("bytes_per_cycle");
+  tr_conflicts_ = trace_.add_rate("conflicts_per_cycle");
+}
+
+void Interconnect::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+
+void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
+  if (port < 0 || static_cast<uint32_t>(port) >= config_.tm_ports) {
+    gp.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
+    return;
+  }
+  const MemoryExtension* ext = gp.get_extension<MemoryExtension>();
+  const bool stream = ext != nullptr && transport::is_stream_access(ext->access);
+  const uint32_t bytes = gp.get_data_length();
+  const uint32_t flits = std::max<uint32_t>(1, (bytes + config_.link_bytes_per_cycle - 1) / config_.link_bytes_per_cycle);
+  const bool data_in = gp.is_write();  // a store or push carries its data toward the target
+
+  const Cycle now = clock_.now();
+  const Cycle t = clock_.request_cycle(delay);
+  transport::ReservationCalendar& in = tm_ports_[static_cast<uint32_t>(port)];
+  transport::ReservationCalendar& link = links_[stream ? config_.l2_banks : bank_of(gp.get_address())];
+  in.retire_before(now);
+  link.retire_before(now);
+  Counters& c = counters_;
+  const Cycle granted = in.book(t, 1).first;
+  if (granted > t) {
+    ++c.port_conflicts;
+    c.conflict_cycles += granted - t;
+  }
+  Cycle arrive = granted + config_.hop_latency_cycles;
+  if (data_in) {
+    const transport::Booking b = link.book(arrive, flits);
+    if (b.first > arrive) {
+      ++c.link_conflicts;
+      c.conflict_cycles += b.first - arrive;
+    }
+    arrive = b.end();
+  }
+
+  sc_core::sc_time d = clock_.delay_until(arrive);
+  (stream ? stream_side : l2_side)->b_transport(gp, d);
+  Cycle done = clock_.request_cycle(d);
+  if (!data_in) {
+    const transport::Booking b = link.book(done, flits);
+    if (b.first > done) {
+      ++c.link_conflicts;
+      c.conflict_cycles += b.first - done;
+    }
+    done = b.end();
+  }
+  done += config_.hop_latency_cycles;
+
+  ++c.transfers;
+  c.bytes += bytes;
+  ++(stream ? c.stream_transfers : c.l2_transfers);
+  c.energy_nj += config_.transfer_energy_nj * flits;
+  if (trace_.enabled()) {
+    trace_.count(tr_bytes_, bytes, now);
+    trace_.count(tr_conflicts_, granted > t ? 1 : 0, now);
+  }
+  delay = clock_.delay_until(done);
+}
+
+}  // namespace strata::memory

@@ -1,0 +1,66 @@
+// A TM's L1 data cache: direct-mapped, N banks interleaved by line, one access per bank per
+// cycle (a second access to a busy bank waits a cycle: a bank conflict). Write-around: a store
+// goes through to the next level and never allocates (docs/memory-system.md says why).
+// Misses to a line already on its way are merged with that fill.
+//
+// Time: the request's absolute cycle t (global time + annotated delay) books the bank at the
+// first free cycle s >= t; a hit completes at s + hit_latency; a miss asks the level below at
+// s + hit_latency and completes when the line arrives, and the fill then takes a bank cycle.
+// The same code serves both timing modes; only the arrival order of requests differs.
+#pragma once
+
+#include "model/memory/cache_core.h"
+#include "model/memory/config.h"
+#include "model/memory/downstream_port.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/stats.h"
+#include "model/memory/window_trace.h"
+#include "tlm/clock.h"
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+namespace strata::memory {
+
+class L1DataCache : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<L1DataCache> target{"target"};              // from the TPs
+  tlm_utils::simple_initiator_socket<L1DataCache> downstream{"downstream"};  // to the L2 side
+
+  struct Counters {
+    uint64_t accesses = 0, loads = 0, stores = 0;
+    uint64_t hits = 0, misses = 0, merged_misses = 0;  // loads only; stores neither hit nor miss
+    uint64_t bank_conflicts = 0, conflict_cycles = 0;
+    uint64_t fills = 0, bytes_read = 0, bytes_written = 0;
+    uint64_t downstream_requests = 0, downstream_bytes = 0;
+    // Loads answered as the precise order would although they arrived out of order (LT
+    // only; always 0 in precise mode): see CacheCore.
+    uint64_t reordered = 0;
+    double energy_nj = 0.0;
+  };
+
+  L1DataCache(sc_core::sc_module_name name, const L1DataCacheConfig& config, SparseMemory& backing);
+
+  const Counters& counters() const { return counters_; }
+  const StatGroup& stats() const { return stats_; }
+  const CacheCore& core() const { return core_; }
+  // VCD: accesses, misses and bank conflicts per cycle over each window. Before sc_start.
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
+
+  L1DataCacheConfig config_;
+  SparseMemory& backing_;
+  transport::Clock clock_;
+  CacheCore core_;
+  DownstreamPort below_;
+  Counters counters_;
+  StatGroup stats_;
+  WindowTrace trace_;
+  std::size_t tr_accesses_, tr_misses_, tr_conflicts_;
+};
+
+}  // namespace strata::memory

@@ -1,0 +1,56 @@
+// A TM's L1 instruction cache: 4 KB, banked by line, direct-mapped, read-only. With
+// model_misses off every fetch hits (the firmware fits, as TRaX assumed) and the level below
+// is never asked; with it on, misses fetch the line through the downstream socket.
+// Time as in the L1 data cache: bank slot at or after the request cycle, plus hit latency.
+#pragma once
+
+#include "model/memory/cache_core.h"
+#include "model/memory/config.h"
+#include "model/memory/downstream_port.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/stats.h"
+#include "model/memory/window_trace.h"
+#include "tlm/clock.h"
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+namespace strata::memory {
+
+class L1InstructionCache : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<L1InstructionCache> target{"target"};
+  // Must be bound even when misses are not modelled (bind it to the L2 side or a sink).
+  tlm_utils::simple_initiator_socket<L1InstructionCache> downstream{"downstream"};
+
+  struct Counters {
+    uint64_t accesses = 0, hits = 0, misses = 0, merged_misses = 0;
+    uint64_t bank_conflicts = 0, conflict_cycles = 0, fills = 0, bytes_read = 0;
+    uint64_t downstream_requests = 0, downstream_bytes = 0;
+    uint64_t reordered = 0;  // LT only: answered as in precise order (see CacheCore)
+    double energy_nj = 0.0;
+  };
+
+  L1InstructionCache(sc_core::sc_module_name name, const L1InstructionCacheConfig& config, SparseMemory& backing);
+
+  const Counters& counters() const { return counters_; }
+  const StatGroup& stats() const { return stats_; }
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
+
+  L1InstructionCacheConfig config_;
+  SparseMemory& backing_;
+  transport::Clock clock_;
+  CacheCore core_;
+  DownstreamPort below_;
+  Counters counters_;
+  StatGroup stats_;
+  WindowTrace trace_;
+  std::size_t tr_accesses_, tr_misses_;
+};
+
+}  // namespace strata::memory

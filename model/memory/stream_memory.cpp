@@ -1,0 +1,133 @@
+#include "model/memory/stream_memory.h"
+
+namespace strata::memory {
+
+using transport::AccessClass;
+using transport::Cycle;
+using transport::kNoTreelet;
+using transport::MemoryExtension;
+using transport::StreamStatus;
+
+StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfig& config)
+    : sc_core::sc_module(name),
+      config_((config.validate(), config)),
+      energy_per_access_(config.energy_per_access_nj()),
+      sram_(make_stream_layout(config)),
+      scheduler_(config.treelets, sram_.capacity(), config.tms, config.policy, config.sticky),
+      ports_(config.ports, config.calendar_horizon_cycles),
+      stats_(basename()) {
+  target.register_b_transport(this, &StreamMemory::b_transport);
+  capacity_ = sram_.capacity();
+  Counters& c = counters_;
+  stats_.add({{"accesses", &c.accesses}, {"pushes", &c.pushes}, {"pops", &c.pops}, {"queries", &c.queries},
+              {"full_rejections", &c.full_rejections}, {"empty_pops", &c.empty_pops},
+              {"assignments", &c.assignments}, {"port_conflicts", &c.port_conflicts},
+              {"conflict_cycles", &c.conflict_cycles}, {"bytes_read", &c.bytes_read},
+              {"bytes_written", &c.bytes_written}, {"stored", &stored_}, {"capacity", &capacity_}});
+  stats_.add("energy_nj", &c.energy_nj);
+  tr_stored_ = trace_.add_level("stored_rays");
+  tr_pushes_ = trace_.add_rate("pushes_per_cycle");
+  tr_pops_ = trace_.add_rate("pops_per_cycle");
+  tr_full_ = trace_.add_rate("full_rejections_per_cycle");
+}
+
+void StreamMemory::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+
+void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
+  MemoryExtension* ext = gp.get_extension<MemoryExtension>();
+  if (ext == nullptr || !transport::is_stream_access(ext->access)) {
+    gp.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return;
+  }
+  const AccessClass access = ext->access;
+  const bool moves_ray = access == AccessClass::kStreamPush || access == AccessClass::kStreamPop;
+  if (moves_ray && (gp.get_data_length() != StreamLayout::kRayBytes || gp.get_data_ptr() == nullptr)) {
+    gp.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return;
+  }
+  if (ext->tm_id >= scheduler_.tms()) {
+    ext->stream_status = StreamStatus::kBadRequest;
+    gp.set_response_status(tlm::TLM_GENERIC_ERROR_RESPONSE);
+    return;
+  }
+
+  const Cycle now = clock_.now();
+  const Cycle t = clock_.request_cycle(delay);
+  Counters& c = counters_;
+  ++c.accesses;
+  c.energy_nj += energy_per_access_;
+  Cycle done = t + config_.query_latency_cycles;
+  if (moves_ray) {
+    ports_.retire_before(now);
+    const Cycle slot = ports_.book(t, 1).first;
+    if (slot > t) {
+      ++c.port_conflicts;
+      c.conflict_cycles += slot - t;
+    }
+    done = slot + config_.access_latency_cycles;
+  }
+
+  StreamStatus status = StreamStatus::kOk;
+  uint32_t result = 0;
+  switch (access) {
+    case AccessClass::kStreamPush: {
+      const uint32_t before = ext->treelet < layout().treelets ? sram_.size(ext->treelet) : 0;
+      status = sram_.push(ext->initiator_id, ext->treelet, gp.get_data_ptr());
+      ++c.pushes;
+      if (status == StreamStatus::kOk) {
+        scheduler_.resized(ext->treelet, before, before + 1);
+        c.bytes_written += StreamLayout::kRayBytes;
+        result = 1;
+      } else if (status == StreamStatus::kFull) {
+        ++c.full_rejections;
+      }
+      break;
+    }
+    case AccessClass::kStreamPop: {
+      const uint32_t treelet = ext->treelet == kNoTreelet ? scheduler_.assigned(ext->tm_id) : ext->treelet;
+      ++c.pops;
+      if (treelet == kNoTreelet) {
+        status = StreamStatus::kEmpty;
+      } else {
+        const uint32_t before = treelet < layout().treelets ? sram_.size(treelet) : 0;
+        status = sram_.pop(ext->initiator_id, treelet, gp.get_data_ptr());
+        if (status == StreamStatus::kOk) {
+          scheduler_.resized(treelet, before, before - 1);
+          c.bytes_read += StreamLayout::kRayBytes;
+          result = 1;
+        }
+      }
+      if (status == StreamStatus::kEmpty) ++c.empty_pops;
+      break;
+    }
+    case AccessClass::kStreamSize:
+      ++c.queries;
+      if (ext->treelet < layout().treelets) result = sram_.size(ext->treelet);
+      else status = StreamStatus::kBadRequest;
+      break;
+    case AccessClass::kStreamAssign:
+      ++c.queries;
+      ++c.assignments;
+      result = scheduler_.assign(ext->tm_id);
+      break;
+    default:  // kStreamCapacity
+      ++c.queries;
+      result = sram_.capacity();
+      break;
+  }
+  stored_ = sram_.stored();
+
+  if (trace_.enabled()) {
+    trace_.level(tr_stored_, static_cast<double>(stored_), now);
+    trace_.count(tr_pushes_, access == AccessClass::kStreamPush && status == StreamStatus::kOk ? 1 : 0, now);
+    trace_.count(tr_pops_, access == AccessClass::kStreamPop && status == StreamStatus::kOk ? 1 : 0, now);
+    trace_.count(tr_full_, status == StreamStatus::kFull ? 1 : 0, now);
+  }
+  ext->stream_status = status;
+  ext->result = result;
+  ext->served_by = transport::ServedBy::kStream;
+  gp.set_response_status(status == StreamStatus::kBadRequest ? tlm::TLM_GENERIC_ERROR_RESPONSE : tlm::TLM_OK_RESPONSE);
+  delay = clock_.delay_until(done);
+}
+
+}  // namespace strata::memory

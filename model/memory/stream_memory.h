@@ -1,0 +1,72 @@
+// The ray stream memory controller (STRaTA): a TLM target serving push, pop, size, assign
+// and capacity (MemoryExtension::access) over the linked lists in StreamSram, and assigning
+// treelet buffers to TMs with a StreamScheduler.
+//
+//   push     TLM write of 48 B; ext.treelet; status kOk, or kFull (nothing stored: retry).
+//   pop      TLM read of 48 B; ext.treelet, or kNoTreelet for the TM's assigned buffer;
+//            status kOk, or kEmpty (buffer empty or none assigned).
+//   size     ext.treelet; result = rays in it.
+//   assign   ext.tm_id; result = the TM's treelet, or kNoTreelet when all are empty.
+//   capacity result = rays the memory holds.
+// ext.result is also 1/0 for push and pop, as the strata.streampush/pop instructions return.
+//
+// Time: push and pop take one of `ports` SRAM ports for a cycle (a reservation calendar, so
+// contention holds in both timing modes) and complete access_latency later; the queries
+// read the head/count region and take query_latency. The lists change in arrival order.
+#pragma once
+
+#include "model/memory/config.h"
+#include "model/memory/stats.h"
+#include "model/memory/stream_scheduler.h"
+#include "model/memory/stream_sram.h"
+#include "model/memory/window_trace.h"
+#include "tlm/clock.h"
+#include "tlm/reservation_calendar.h"
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+namespace strata::memory {
+
+class StreamMemory : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<StreamMemory> target{"target"};
+
+  struct Counters {
+    uint64_t accesses = 0, pushes = 0, pops = 0, queries = 0;
+    uint64_t full_rejections = 0, empty_pops = 0, assignments = 0, port_conflicts = 0, conflict_cycles = 0;
+    uint64_t bytes_read = 0, bytes_written = 0;
+    double energy_nj = 0.0;
+  };
+
+  StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfig& config);
+
+  uint32_t capacity() const { return sram_.capacity(); }
+  uint32_t stored() const { return sram_.stored(); }
+  uint32_t size(uint32_t treelet) const { return sram_.size(treelet); }
+  const StreamLayout& layout() const { return sram_.layout(); }
+  const StreamScheduler& scheduler() const { return scheduler_; }
+  const Counters& counters() const { return counters_; }
+  const StatGroup& stats() const { return stats_; }
+  double energy_per_access_nj() const { return energy_per_access_; }
+  // VCD: rays stored, pushes and pops per cycle, rejected pushes per cycle.
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
+
+  StreamMemoryConfig config_;
+  double energy_per_access_;
+  transport::Clock clock_;
+  StreamSram sram_;
+  StreamScheduler scheduler_;
+  transport::ReservationCalendar ports_;
+  Counters counters_;
+  StatGroup stats_;
+  uint64_t stored_ = 0, capacity_ = 0;  // mirrors for the statistics tree
+  WindowTrace trace_;
+  std::size_t tr_stored_, tr_pushes_, tr_pops_, tr_full_;
+};
+
+}  // namespace strata::memory

@@ -1,0 +1,63 @@
+// What a memory request is, beyond address and command: who sent it and which kind of access
+// it is. Stream-memory operations also carry their treelet and come back with a status and a
+// result word. One extension is attached to every pooled payload for its whole life, so the
+// hot path never allocates one.
+#pragma once
+
+#include <tlm>
+
+#include <cstdint>
+
+namespace strata::transport {
+
+enum class AccessClass : uint8_t {
+  kDataLoad,
+  kDataStore,
+  kInstructionFetch,
+  kStreamPush,      // write 48 B ray to `treelet`'s buffer
+  kStreamPop,       // read 48 B ray from `treelet` (kNoTreelet: the TM's assigned buffer)
+  kStreamSize,      // result = rays in `treelet`'s buffer
+  kStreamAssign,    // result = the TM's treelet (kNoTreelet when every buffer is empty)
+  kStreamCapacity,  // result = rays the stream memory holds
+};
+
+constexpr bool is_stream_access(AccessClass a) { return a >= AccessClass::kStreamPush; }
+
+enum class StreamStatus : uint8_t { kOk, kFull, kEmpty, kBadRequest };
+
+// The level that answered a load: lets tests and statistics see where a latency came from.
+enum class ServedBy : uint8_t { kNone, kL1, kL1Merged, kL2, kL2Merged, kDram, kStream, kSink };
+
+constexpr uint32_t kNoTreelet = 0xFFFFFFFFu;
+
+struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
+  // Request.
+  uint32_t initiator_id = 0;  // global thread id (tm * tps_per_tm + tp)
+  uint32_t tm_id = 0;
+  AccessClass access = AccessClass::kDataLoad;
+  // The level above already moved the data through the backing store; only book time.
+  bool timing_only = false;
+  uint32_t treelet = kNoTreelet;
+  // Response.
+  StreamStatus stream_status = StreamStatus::kOk;
+  uint32_t result = 0;
+  ServedBy served_by = ServedBy::kNone;
+
+  void reset_response() {
+    stream_status = StreamStatus::kOk;
+    result = 0;
+    served_by = ServedBy::kNone;
+  }
+  tlm::tlm_extension_base* clone() const override { return new MemoryExtension(*this); }
+  void copy_from(const tlm::tlm_extension_base& other) override {
+    *this = static_cast<const MemoryExtension&>(other);
+  }
+};
+
+// The access class of a payload; plain TLM initiators without the extension are data accesses.
+inline AccessClass access_class_of(const tlm::tlm_generic_payload& gp, const MemoryExtension* ext) {
+  if (ext != nullptr) return ext->access;
+  return gp.is_write() ? AccessClass::kDataStore : AccessClass::kDataLoad;
+}
+
+}  // namespace strata::transport

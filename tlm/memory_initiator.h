@@ -1,0 +1,84 @@
+// The initiator side of a memory access in either timing mode. A thread (a TP, a test, a
+// benchmark) calls load/store/fetch/stream_* from its SC_THREAD; each call is blocking, as an
+// in-order TP waits for its access, and returns when and where the access completed.
+//
+//   kLooselyTimed: the thread runs ahead of global time within a quantum; a request carries
+//                  its local offset as annotated delay and the answer advances the offset.
+//                  The thread waits only when the offset reaches the quantum.
+//   kPrecise:      the thread waits until global time reaches its local time before every
+//                  access (a quantum of one cycle), so requests reach the targets in time
+//                  order. This is the accuracy reference.
+// Targets are the same in both modes: they compute completion from request time + calendars.
+#pragma once
+
+#include "tlm/clock.h"
+#include "tlm/memory_extension.h"
+#include "tlm/payload_pool.h"
+#include "tlm/quantum_keeper.h"
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include <cstdint>
+
+namespace strata::transport {
+
+enum class TimingMode : uint8_t { kLooselyTimed, kPrecise };
+const char* to_string(TimingMode mode);
+
+struct InitiatorConfig {
+  TimingMode mode = TimingMode::kLooselyTimed;
+  Cycle quantum_cycles = 1000;  // LT only
+  uint32_t initiator_id = 0;    // global thread id
+  uint32_t tm_id = 0;
+};
+
+struct AccessResult {
+  tlm::tlm_response_status response = tlm::TLM_INCOMPLETE_RESPONSE;
+  Cycle issued = 0;     // absolute cycle the request was made for
+  Cycle completed = 0;  // absolute cycle it completed
+  StreamStatus stream_status = StreamStatus::kOk;
+  uint32_t result = 0;
+  ServedBy served_by = ServedBy::kNone;
+  Cycle latency() const { return completed - issued; }
+  bool ok() const { return response == tlm::TLM_OK_RESPONSE; }
+};
+
+class MemoryInitiator : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_initiator_socket<MemoryInitiator> socket{"socket"};
+
+  MemoryInitiator(sc_core::sc_module_name name, const InitiatorConfig& config);
+
+  AccessResult load(uint64_t addr, void* data, uint32_t bytes);
+  AccessResult store(uint64_t addr, const void* data, uint32_t bytes);
+  AccessResult fetch(uint64_t addr, void* data, uint32_t bytes);
+  AccessResult stream_push(uint32_t treelet, const void* ray48);
+  AccessResult stream_pop(uint32_t treelet, void* ray48);  // kNoTreelet: the TM's buffer
+  AccessResult stream_size(uint32_t treelet);
+  AccessResult stream_assign();
+  AccessResult stream_capacity();
+  // A push that the stream memory refuses because it is full is retried after `retry_cycles`
+  // until it is stored: the TP stalls, the ray is never dropped.
+  AccessResult stream_push_blocking(uint32_t treelet, const void* ray48, Cycle retry_cycles,
+                                    uint64_t* retries = nullptr);
+
+  AccessResult access(AccessClass access, uint64_t addr, void* data, uint32_t bytes,
+                      uint32_t treelet = kNoTreelet);
+
+  // Work between accesses (compute cycles): advances this thread's local time.
+  void advance(Cycle cycles);
+  // Waits until global time reaches this thread's local time.
+  void sync() { keeper_.sync(); }
+  Cycle local_cycle() const { return clock_.cycle_ceil(keeper_.current_time()); }
+  const InitiatorConfig& config() const { return config_; }
+
+ private:
+  InitiatorConfig config_;
+  Clock clock_;
+  QuantumKeeper keeper_;
+  PayloadPool pool_;
+};
+
+}  // namespace strata::transport

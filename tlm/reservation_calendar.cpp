@@ -1,0 +1,128 @@
+#include "tlm/reservation_calendar.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace strata::transport {
+
+namespace {
+uint32_t round_up_pow2(uint32_t v) {
+  uint32_t p = 64;
+  while (p < v) p <<= 1;
+  return p;
+}
+}  // namespace
+
+ReservationCalendar::ReservationCalendar(uint32_t units_per_cycle, uint32_t horizon_cycles)
+    : capacity_(units_per_cycle), horizon_(round_up_pow2(horizon_cycles)), mask_(horizon_ - 1) {
+  if (capacity_ == 0) throw std::invalid_argument("ReservationCalendar: units_per_cycle must be > 0");
+  if (horizon_cycles > (1u << 30)) throw std::invalid_argument("ReservationCalendar: horizon too large");
+  full_.assign(horizon_ / 64, 0);
+  if (capacity_ > 1) used_.assign(horizon_, 0);
+}
+
+Cycle ReservationCalendar::first_free(Cycle from) const {
+  const Cycle end = base_ + horizon_;
+  Cycle c = from;
+  while (c < end) {
+    const uint32_t slot = static_cast<uint32_t>(c & mask_);
+    const uint32_t bit = slot & 63;
+    const uint64_t below = bit == 0 ? 0 : ((uint64_t{1} << bit) - 1);
+    const uint64_t word = full_[slot >> 6] | below;
+    if (word != ~uint64_t{0}) {
+      const Cycle found = c + static_cast<Cycle>(__builtin_ctzll(~word) - bit);
+      return found < end ? found : kNone;
+    }
+    c += 64 - bit;
+  }
+  return kNone;
+}
+
+void ReservationCalendar::mark_full(uint32_t slot) { full_[slot >> 6] |= uint64_t{1} << (slot & 63); }
+
+Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
+  if (units == 0) units = 1;
+  Cycle c = std::max(earliest, base_);
+  Booking b;
+  bool started = false;
+  while (units > 0) {
+    const Cycle f = first_free(c);
+    if (f == kNone) {
+      // Beyond the window: serve after everything already there, in arrival order.
+      const Cycle start = std::max({c, base_ + horizon_, overflow_tail_});
+      const Cycle cycles = (units + capacity_ - 1) / capacity_;
+      if (overflow_tail_ <= overflow_head_) overflow_head_ = start;
+      overflow_tail_ = start + cycles;
+      if (!started) b.first = start;
+      b.last = overflow_tail_ - 1;
+      ++overflows_;
+      break;
+    }
+    const uint32_t slot = static_cast<uint32_t>(f & mask_);
+    uint32_t take = 1;
+    if (capacity_ == 1) {
+      mark_full(slot);
+    } else {
+      take = std::min(capacity_ - used_[slot], units);
+      used_[slot] += take;
+      if (used_[slot] == capacity_) mark_full(slot);
+    }
+    units -= take;
+    if (!started) {
+      b.first = f;
+      started = true;
+    }
+    b.last = f;
+    c = f + 1;
+  }
+  latest_end_ = std::max(latest_end_, b.end());
+  return b;
+}
+
+uint32_t ReservationCalendar::used(Cycle c) const {
+  if (c < base_ || c >= base_ + horizon_) return 0;
+  const uint32_t slot = static_cast<uint32_t>(c & mask_);
+  if (capacity_ > 1) return used_[slot];
+  return static_cast<uint32_t>((full_[slot >> 6] >> (slot & 63)) & 1);
+}
+
+void ReservationCalendar::clear_range(Cycle from, Cycle count) {
+  uint32_t slot = static_cast<uint32_t>(from & mask_);
+  while (count > 0) {
+    const uint32_t bit = slot & 63;
+    const uint32_t n = static_cast<uint32_t>(std::min<Cycle>(64 - bit, count));
+    const uint64_t bits = n == 64 ? ~uint64_t{0} : (((uint64_t{1} << n) - 1) << bit);
+    full_[slot >> 6] &= ~bits;
+    if (capacity_ > 1) std::fill_n(used_.begin() + slot, n, 0u);
+    slot = (slot + n) & mask_;
+    count -= n;
+  }
+}
+
+void ReservationCalendar::expose(Cycle from, Cycle to) {
+  const Cycle lo = std::max(from, overflow_head_);
+  const Cycle hi = std::min(to, overflow_tail_);
+  for (Cycle c = lo; c < hi; ++c) {
+    const uint32_t slot = static_cast<uint32_t>(c & mask_);
+    mark_full(slot);
+    if (capacity_ > 1) used_[slot] = capacity_;
+  }
+  // The whole tail is inside the window now; later overflows start a new one.
+  if (overflow_tail_ <= to) overflow_head_ = overflow_tail_ = 0;
+}
+
+void ReservationCalendar::retire_before(Cycle now) {
+  if (now <= base_) return;
+  const Cycle old_end = base_ + horizon_;
+  if (now - base_ >= horizon_) {
+    clear_range(0, horizon_);
+    base_ = now;
+    expose(base_, base_ + horizon_);
+  } else {
+    clear_range(base_, now - base_);
+    base_ = now;
+    expose(old_end, base_ + horizon_);
+  }
+}
+
+}  // namespace strata::transport
