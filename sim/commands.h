@@ -8,6 +8,7 @@ namespace strata::sim {
 
 void add_scene_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+void add_run_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 
 }  // namespace strata::sim

@@ -1,17 +1,22 @@
 // strata-sim: entry point. Each subcommand lives in its own file and registers here.
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <systemc>
 
 #include "sim/commands.h"
 
-int main(int argc, char** argv) {
+// libsystemc owns main() and calls sc_main(), so the chip can be elaborated here.
+int sc_main(int argc, char** argv) {
+  setenv("SC_COPYRIGHT_MESSAGE", "DISABLE", 0);
   CLI::App app{"strata-sim: SystemC/TLM-2.0 model of the STRaTA ray-tracing architecture"};
   app.require_subcommand(1);
   strata::sim::add_scene_command(app);
   strata::sim::add_render_command(app);
   strata::sim::add_trace_command(app);
+  strata::sim::add_run_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

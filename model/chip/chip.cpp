@@ -1,0 +1,155 @@
+#include "model/chip/chip.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "firmware/kernels/boot_block.h"
+
+namespace strata::chip {
+namespace {
+
+uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+
+// The predecoded code of the kernel's executable segments, shared by every TP of the chip.
+iss::CodeImage build_code(const iss::ElfImage& elf) {
+  uint64_t low = UINT64_MAX, high = 0;
+  for (const iss::ElfSegment& s : elf.segments)
+    if (s.executable) {
+      low = std::min<uint64_t>(low, s.vaddr & ~3u);
+      high = std::max<uint64_t>(high, align_up(uint64_t{s.vaddr} + s.memsz, 4));
+    }
+  if (high == 0) throw iss::ElfError(elf.path + ": no executable segment");
+  std::vector<uint32_t> words(static_cast<size_t>((high - low) / 4), 0);
+  for (const iss::ElfSegment& s : elf.segments)
+    if (s.executable && !s.bytes.empty())
+      std::memcpy(reinterpret_cast<uint8_t*>(words.data()) + (s.vaddr - low), s.bytes.data(), s.bytes.size());
+  return iss::CodeImage(static_cast<uint32_t>(low), std::move(words));
+}
+
+}  // namespace
+
+Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameInputs& inputs)
+    : sc_core::sc_module(name), config_(config) {
+  const iss::ElfImage elf = iss::load_elf(inputs.kernel_elf);
+  code_ = build_code(elf);
+  load(inputs, elf);
+
+  dram_ = std::make_unique<memory::Dram>("dram", config_.dram, backing_);
+  l2_ = std::make_unique<memory::L2Cache>("l2", config_.l2, backing_);
+  stream_ = std::make_unique<memory::StreamMemory>("stream", config_.stream);
+  interconnect_ = std::make_unique<memory::Interconnect>("interconnect", config_.interconnect);
+  interconnect_->l2_side.bind(l2_->target);
+  interconnect_->stream_side.bind(stream_->target);
+  l2_->downstream.bind(dram_->target);
+
+  TmEnvironment env;
+  env.config = &config_;
+  env.backing = &backing_;
+  env.code = &code_;
+  env.globals = &globals_;
+  env.entry_pc = elf.entry;
+  env.tohost = elf.symbol("tohost").value_or(0);
+  env.guest_low = 0x1000;  // the first page stays unmapped, so a null pointer faults
+  env.guest_high = layout_.end;
+  env.stacks_base = layout_.stacks;
+  for (uint32_t t = 0; t < config_.tms; ++t) {
+    const std::string n = std::to_string(t);
+    l1d_.push_back(std::make_unique<memory::L1DataCache>(("l1d_" + n).c_str(), config_.l1d, backing_));
+    l1i_.push_back(std::make_unique<memory::L1InstructionCache>(("l1i_" + n).c_str(), config_.l1i, backing_));
+    tms_.push_back(std::make_unique<ThreadMultiprocessor>(("tm_" + n).c_str(), env, t));
+    tms_.back()->data_port.bind(l1d_.back()->target);
+    tms_.back()->fetch_port.bind(l1i_.back()->target);
+    l1d_.back()->downstream.bind(interconnect_->tm_side);
+    l1i_.back()->downstream.bind(interconnect_->tm_side);
+    tms_.back()->stream_port.bind(interconnect_->tm_side);
+  }
+}
+
+Chip::~Chip() = default;
+
+void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
+  uint64_t elf_end = 0;
+  for (const iss::ElfSegment& s : elf.segments) {
+    if (!s.bytes.empty()) backing_.write(s.vaddr, s.bytes.data(), s.bytes.size());
+    elf_end = std::max<uint64_t>(elf_end, uint64_t{s.vaddr} + s.memsz);
+  }
+  const auto boot_symbol = elf.symbol(kernels::kBootBlockSymbol);
+  if (!boot_symbol)
+    throw std::runtime_error(elf.path + ": no '" + std::string(kernels::kBootBlockSymbol) + "' symbol: not a render kernel");
+  const uint64_t treelet = std::max<uint64_t>(in.treelet_bytes, 64);
+  GuestLayout& g = layout_;
+  g.stacks = static_cast<uint32_t>(align_up(elf_end, 1 << 16));
+  const uint64_t stacks_end = uint64_t{g.stacks} + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+  const uint64_t image = align_up(stacks_end, treelet);
+  const uint64_t frame = align_up(image + in.scene_image_bytes, 64);
+  pixels_ = in.frame.width * in.frame.height;
+  const uint64_t framebuffer = align_up(frame + sizeof(kernels::FrameParams), 64);
+  const uint64_t counters = align_up(framebuffer + uint64_t{pixels_} * sizeof(kernels::Pixel), 64);
+  g.end = align_up(counters + uint64_t{config_.threads()} * sizeof(kernels::RayCounters), 64);
+  if (g.end > 0xFFFFFFFFull)
+    throw std::runtime_error("chip: firmware, stacks, scene image and frame need " + std::to_string(g.end) +
+                             " bytes, more than the 32-bit guest address space");
+  g.scene_image = static_cast<uint32_t>(image);
+  g.frame = static_cast<uint32_t>(frame);
+  g.framebuffer = static_cast<uint32_t>(framebuffer);
+  g.counters = static_cast<uint32_t>(counters);
+  backing_.write(g.scene_image, in.scene_image, in.scene_image_bytes);
+  backing_.write(g.frame, &in.frame, sizeof in.frame);
+  const kernels::BootBlock boot{g.frame, g.scene_image, g.framebuffer, g.counters};
+  backing_.write(*boot_symbol, &boot, sizeof boot);
+}
+
+void Chip::trace(sc_core::sc_trace_file* file, transport::Cycle window) {
+  for (auto& tm : tms_) tm->trace(file, window);
+  for (auto& c : l1d_) c->trace(file, window);
+  for (auto& c : l1i_) c->trace(file, window);
+  l2_->trace(file, window);
+  stream_->trace(file, window);
+  dram_->trace(file, window);
+  interconnect_->trace(file, window);
+}
+
+bool Chip::finished() const {
+  return std::all_of(tms_.begin(), tms_.end(), [](const auto& tm) { return tm->finished(); });
+}
+
+std::string Chip::error() const {
+  for (const auto& tm : tms_)
+    if (tm->failed()) return tm->error();
+  return finished() ? "" : "the simulation stopped before every TM finished";
+}
+
+transport::Cycle Chip::cycles() const {
+  transport::Cycle c = 0;
+  for (const auto& tm : tms_) c = std::max(c, tm->counters().finished_cycle);
+  return c;
+}
+
+std::vector<kernels::Pixel> Chip::framebuffer() const {
+  std::vector<kernels::Pixel> pixels(pixels_);
+  backing_.read(layout_.framebuffer, pixels.data(), pixels.size() * sizeof(kernels::Pixel));
+  return pixels;
+}
+
+std::vector<kernels::RayCounters> Chip::ray_counters_per_thread() const {
+  std::vector<kernels::RayCounters> c(config_.threads());
+  backing_.read(layout_.counters, c.data(), c.size() * sizeof(kernels::RayCounters));
+  return c;
+}
+
+kernels::RayCounters Chip::ray_counters() const {
+  kernels::RayCounters sum{};
+  for (const kernels::RayCounters& c : ray_counters_per_thread()) {
+    for (uint32_t t = 0; t < kernels::kRayTypes; ++t) {
+      sum.rays[t] += c.rays[t];
+      sum.hits[t] += c.hits[t];
+    }
+    sum.node_visits += c.node_visits;
+    sum.triangle_tests += c.triangle_tests;
+    sum.paths += c.paths;
+  }
+  return sum;
+}
+
+}  // namespace strata::chip

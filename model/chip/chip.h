@@ -1,0 +1,92 @@
+// The chip top: N thread multiprocessors, each with its L1 data and instruction caches, an
+// interconnect to the banked L2 and the ray stream memory, DRAM channels behind the L2, the
+// global registers, and one sparse backing store holding the firmware, the TP stacks, the
+// scene image, the frame parameters, the framebuffer and the per-thread ray counters.
+// Everything is connected through TLM-2.0 sockets.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <systemc>
+
+#include "firmware/kernels/frame_abi.h"
+#include "model/chip/chip_config.h"
+#include "model/chip/global_registers.h"
+#include "model/chip/thread_multiprocessor.h"
+#include "model/iss/code_image.h"
+#include "model/iss/elf_loader.h"
+#include "model/memory/dram.h"
+#include "model/memory/interconnect.h"
+#include "model/memory/l1_data_cache.h"
+#include "model/memory/l1_instruction_cache.h"
+#include "model/memory/l2_cache.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/stream_memory.h"
+
+namespace strata::chip {
+
+// What one frame needs besides the chip: the kernel, the scene image and the frame setup.
+struct FrameInputs {
+  std::string kernel_elf;
+  const uint8_t* scene_image = nullptr;
+  uint64_t scene_image_bytes = 0;
+  uint32_t treelet_bytes = 0;  // the image is placed at an address aligned to it
+  kernels::FrameParams frame{};
+};
+
+// Guest addresses of what the chip loaded (see Chip::Chip).
+struct GuestLayout {
+  uint32_t stacks = 0, scene_image = 0, frame = 0, framebuffer = 0, counters = 0;
+  uint64_t end = 0;
+};
+
+class Chip : public sc_core::sc_module {
+ public:
+  // Throws ConfigError / iss::ElfError / std::runtime_error naming what is wrong.
+  Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameInputs& inputs);
+  ~Chip() override;
+
+  // Registers every module's VCD traces; call before sc_start.
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+  // After the simulation: did every TM finish, and the first error if not.
+  bool finished() const;
+  std::string error() const;
+  transport::Cycle cycles() const;  // when the last TP finished
+
+  std::vector<kernels::Pixel> framebuffer() const;
+  kernels::RayCounters ray_counters() const;  // summed over the threads
+  std::vector<kernels::RayCounters> ray_counters_per_thread() const;
+
+  const ChipConfig& config() const { return config_; }
+  const GuestLayout& layout() const { return layout_; }
+  const std::vector<std::unique_ptr<ThreadMultiprocessor>>& tms() const { return tms_; }
+  const std::vector<std::unique_ptr<memory::L1DataCache>>& l1d() const { return l1d_; }
+  const std::vector<std::unique_ptr<memory::L1InstructionCache>>& l1i() const { return l1i_; }
+  const memory::L2Cache& l2() const { return *l2_; }
+  const memory::StreamMemory& stream() const { return *stream_; }
+  const memory::Dram& dram() const { return *dram_; }
+  const memory::Interconnect& interconnect() const { return *interconnect_; }
+  const memory::SparseMemory& backing() const { return backing_; }
+
+ private:
+  void load(const FrameInputs& inputs, const iss::ElfImage& elf);
+
+  ChipConfig config_;
+  memory::SparseMemory backing_;
+  GlobalRegisters globals_;
+  iss::CodeImage code_;
+  GuestLayout layout_;
+  uint32_t pixels_ = 0;
+  std::unique_ptr<memory::Dram> dram_;
+  std::unique_ptr<memory::L2Cache> l2_;
+  std::unique_ptr<memory::StreamMemory> stream_;
+  std::unique_ptr<memory::Interconnect> interconnect_;
+  std::vector<std::unique_ptr<memory::L1DataCache>> l1d_;
+  std::vector<std::unique_ptr<memory::L1InstructionCache>> l1i_;
+  std::vector<std::unique_ptr<ThreadMultiprocessor>> tms_;
+};
+
+}  // namespace strata::chip

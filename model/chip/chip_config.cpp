@@ -1,0 +1,189 @@
+#include "model/chip/chip_config.h"
+
+#include <fstream>
+
+#include "model/memory/stream_sram.h"
+
+namespace strata::chip {
+namespace {
+
+void bind_unit(ConfigBinder& b, const std::string& p, tm::XuUnitConfig& u) {
+  b.bind(p + ".count", &u.count);
+  b.bind(p + ".latency", &u.latency);
+  b.bind(p + ".pipelined", &u.pipelined);
+}
+
+void bind_pipeline(ConfigBinder& b, const std::string& p, tm::FusedPipelineConfig& f) {
+  b.bind(p + ".multipliers", &f.multipliers);
+  b.bind(p + ".adders", &f.adders);
+  b.bind(p + ".initiation_interval", &f.initiation_interval);
+  b.bind(p + ".latency", &f.latency);
+  b.bind(p + ".issue_width", &f.issue_width);
+}
+
+template <class F>
+void checked(const char* section, F&& validate) {
+  try {
+    validate();
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(std::string(section) + ": " + e.what());
+  }
+}
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw ConfigError(message);
+}
+
+}  // namespace
+
+void EnergyConfig::validate() const {
+  for (double v : {register_file_access_nj, fp_add_nj, fp_mul_nj, fp_cmp_nj, fp_div_nj, fp_inv_sqrt_nj,
+                   int_mul_nj, int_div_nj, box_test_nj, triangle_test_nj})
+    if (!(v >= 0.0)) throw std::invalid_argument("energies must be >= 0 nJ");
+}
+
+void ChipConfig::bind(ConfigBinder& b) {
+  b.bind("design.name", &design.name);
+  b.bind("design.streams", &design.streams);
+  b.bind("design.pipelines", &design.pipelines);
+  b.bind("clock_ghz", &clock_ghz);
+  b.bind("tms", &tms);
+  b.bind("tps_per_tm", &tps_per_tm);
+  b.bind("tp_stack_bytes", &tp_stack_bytes);
+  b.bind("global_register_latency_cycles", &global_register_latency_cycles);
+  b.bind_enum("timing.mode", &timing.mode, {"lt", "precise"});
+  b.bind("timing.quantum_cycles", &timing.quantum_cycles);
+
+  auto& tp = tm.tp;
+  b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
+  b.bind("tm.tp.branch_latency", &tp.branch_latency);
+  b.bind("tm.tp.system_latency", &tp.system_latency);
+  b.bind("tm.tp.fp_move_latency", &tp.fp_move_latency);
+  b.bind("tm.tp.id_latency", &tp.id_latency);
+  b.bind("tm.tp.pipe_input_latency", &tp.pipe_input_latency);
+  b.bind("tm.tp.control_latency", &tp.control_latency);
+  bind_unit(b, "tm.xu.fp_mul", tm.xu.fp_mul);
+  bind_unit(b, "tm.xu.fp_add", tm.xu.fp_add);
+  bind_unit(b, "tm.xu.fp_cmp", tm.xu.fp_cmp);
+  bind_unit(b, "tm.xu.fp_div", tm.xu.fp_div);
+  bind_unit(b, "tm.xu.fp_inv_sqrt", tm.xu.fp_inv_sqrt);
+  bind_unit(b, "tm.xu.int_mul", tm.xu.int_mul);
+  bind_unit(b, "tm.xu.int_div", tm.xu.int_div);
+  bind_pipeline(b, "tm.pipelines.box", tm.pipelines.box);
+  bind_pipeline(b, "tm.pipelines.triangle", tm.pipelines.triangle);
+  b.bind("tm.pipelines.triangle_divide_latency", &tm.pipelines.triangle_divide_latency);
+  b.bind("tm.pipelines.reconfigure_cycles", &tm.pipelines.reconfigure_cycles);
+  b.bind("tm.xu_horizon_cycles", &tm.xu_horizon_cycles);
+  b.bind("tm.xu_history_cycles", &tm.xu_history_cycles);
+
+  b.bind("memory.l1d.size_bytes", &l1d.size_bytes);
+  b.bind("memory.l1d.banks", &l1d.banks);
+  b.bind("memory.l1d.line_bytes", &l1d.line_bytes);
+  b.bind("memory.l1d.hit_latency_cycles", &l1d.hit_latency_cycles);
+  b.bind("memory.l1d.calendar_horizon_cycles", &l1d.calendar_horizon_cycles);
+  b.bind("memory.l1d.access_energy_nj", &l1d.access_energy_nj);
+  b.bind("memory.l1i.size_bytes", &l1i.size_bytes);
+  b.bind("memory.l1i.banks", &l1i.banks);
+  b.bind("memory.l1i.line_bytes", &l1i.line_bytes);
+  b.bind("memory.l1i.hit_latency_cycles", &l1i.hit_latency_cycles);
+  b.bind("memory.l1i.model_misses", &l1i.model_misses);
+  b.bind("memory.l1i.calendar_horizon_cycles", &l1i.calendar_horizon_cycles);
+  b.bind("memory.l1i.access_energy_nj", &l1i.access_energy_nj);
+  b.bind("memory.l2.size_bytes", &l2.size_bytes);
+  b.bind("memory.l2.banks", &l2.banks);
+  b.bind("memory.l2.line_bytes", &l2.line_bytes);
+  b.bind("memory.l2.ways", &l2.ways);
+  b.bind("memory.l2.hit_latency_cycles", &l2.hit_latency_cycles);
+  b.bind("memory.l2.calendar_horizon_cycles", &l2.calendar_horizon_cycles);
+  b.bind("memory.l2.access_energy_nj", &l2.access_energy_nj);
+  b.bind("memory.stream.size_bytes", &stream.size_bytes);
+  b.bind("memory.stream.treelets", &stream.treelets);
+  b.bind("memory.stream.ports", &stream.ports);
+  b.bind("memory.stream.access_latency_cycles", &stream.access_latency_cycles);
+  b.bind("memory.stream.query_latency_cycles", &stream.query_latency_cycles);
+  b.bind_enum("memory.stream.policy", &stream.policy, {"fullest-first", "round-robin"});
+  b.bind("memory.stream.sticky", &stream.sticky);
+  b.bind("memory.stream.calendar_horizon_cycles", &stream.calendar_horizon_cycles);
+  b.bind("memory.stream.access_energy_nj", &stream.access_energy_nj);
+  b.bind("memory.dram.channels", &dram.channels);
+  b.bind("memory.dram.bytes_per_cycle", &dram.bytes_per_cycle);
+  b.bind("memory.dram.latency_cycles", &dram.latency_cycles);
+  b.bind("memory.dram.interleave_bytes", &dram.interleave_bytes);
+  b.bind("memory.dram.burst_bytes", &dram.burst_bytes);
+  b.bind("memory.dram.calendar_horizon_cycles", &dram.calendar_horizon_cycles);
+  b.bind("memory.dram.access_energy_nj", &dram.access_energy_nj);
+  b.bind("memory.interconnect.link_bytes_per_cycle", &interconnect.link_bytes_per_cycle);
+  b.bind("memory.interconnect.hop_latency_cycles", &interconnect.hop_latency_cycles);
+  b.bind("memory.interconnect.calendar_horizon_cycles", &interconnect.calendar_horizon_cycles);
+  b.bind("memory.interconnect.transfer_energy_nj", &interconnect.transfer_energy_nj);
+
+  b.bind("energy.register_file_access_nj", &energy.register_file_access_nj);
+  b.bind("energy.fp_add_nj", &energy.fp_add_nj);
+  b.bind("energy.fp_mul_nj", &energy.fp_mul_nj);
+  b.bind("energy.fp_cmp_nj", &energy.fp_cmp_nj);
+  b.bind("energy.fp_div_nj", &energy.fp_div_nj);
+  b.bind("energy.fp_inv_sqrt_nj", &energy.fp_inv_sqrt_nj);
+  b.bind("energy.int_mul_nj", &energy.int_mul_nj);
+  b.bind("energy.int_div_nj", &energy.int_div_nj);
+  b.bind("energy.box_test_nj", &energy.box_test_nj);
+  b.bind("energy.triangle_test_nj", &energy.triangle_test_nj);
+}
+
+void ChipConfig::finalize() {
+  require(tms >= 1, "tms: the chip needs at least 1 TM, got " + std::to_string(tms));
+  require(tms <= 1024, "tms: at most 1024 TMs are supported, got " + std::to_string(tms));
+  require(tps_per_tm >= 1 && tps_per_tm <= 64, "tps_per_tm: must be 1..64, got " + std::to_string(tps_per_tm));
+  require(clock_ghz > 0.0 && clock_ghz <= 100.0, "clock_ghz: must be in (0, 100]");
+  require(tp_stack_bytes >= 256 && tp_stack_bytes % 16 == 0,
+          "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
+  require(timing.quantum_cycles >= 1, "timing.quantum_cycles: must be at least 1");
+  tm.tps = tps_per_tm;
+  stream.tms = tms;
+  stream.threads = threads();
+  // Each TM binds its L1 data cache, its L1 instruction cache and its stream port.
+  interconnect.tm_ports = 3 * tms;
+  interconnect.l2_banks = l2.banks;
+  interconnect.l2_line_bytes = l2.line_bytes;
+  checked("tm", [&] { tm.validate(); });
+  checked("memory.l1d", [&] { l1d.validate(); });
+  checked("memory.l1i", [&] { l1i.validate(); });
+  checked("memory.l2", [&] { l2.validate(); });
+  checked("memory.stream", [&] { stream.validate(); });
+  checked("memory.dram", [&] { dram.validate(); });
+  checked("memory.interconnect", [&] { interconnect.validate(); });
+  checked("energy", [&] { energy.validate(); });
+  if (design.streams) {
+    uint32_t capacity = 0;
+    checked("memory.stream", [&] { capacity = memory::make_stream_layout(stream).capacity; });
+    require(capacity >= threads(), "memory.stream.size_bytes: " + std::to_string(stream.size_bytes) +
+                                       " bytes hold " + std::to_string(capacity) + " rays, fewer than one per TP (" +
+                                       std::to_string(threads()) + ")");
+  }
+  for (uint32_t horizon : {l1d.calendar_horizon_cycles, l2.calendar_horizon_cycles, dram.calendar_horizon_cycles})
+    require(horizon > timing.quantum_cycles,
+            "timing.quantum_cycles: must be below every calendar horizon (" + std::to_string(horizon) + ")");
+}
+
+ChipConfig load_chip_config(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  ChipConfig config;
+  ConfigBinder binder;
+  config.bind(binder);
+  if (!file.empty()) {
+    std::ifstream in(file);
+    if (!in) throw ConfigError(file.string() + ": cannot open config file");
+    nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+    if (doc.is_discarded()) throw ConfigError(file.string() + ": not valid JSON");
+    binder.apply(doc, file.string());
+  }
+  for (const std::string& o : overrides) binder.apply_override(o);
+  config.finalize();
+  return config;
+}
+
+nlohmann::json to_json(ChipConfig config) {
+  ConfigBinder binder;
+  config.bind(binder);
+  return binder.dump();
+}
+
+}  // namespace strata::chip

@@ -1,0 +1,79 @@
+// Everything that describes one simulated chip: the design (which STRaTA mechanisms are on),
+// its size, every module's parameters, the energy table, and the timing mode. One typed
+// struct per module (model/memory/config.h, model/tm/tm_config.h); this file composes them,
+// binds every field to a JSON path (sim/configs/*.json, `--set path=value`), and checks the
+// values against each other.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "model/chip/config_binder.h"
+#include "model/memory/config.h"
+#include "model/tm/tm_config.h"
+#include "tlm/memory_initiator.h"
+
+namespace strata::chip {
+
+struct DesignConfig {
+  std::string name = "strata-pipelines";
+  bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)
+  bool pipelines = true;  // fused box/triangle pipelines (else: general-purpose XUs only)
+};
+
+struct TimingConfig {
+  transport::TimingMode mode = transport::TimingMode::kLooselyTimed;
+  uint32_t quantum_cycles = 1000;  // LT: how far a TM may run ahead of global time
+};
+
+// Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register
+// file (128 B, CACTI 6.5, 65 nm); the XU figures are 65 nm single-precision FPU estimates
+// (Galal and Horowitz, "Energy-Efficient Floating-Point Unit Design", IEEE TC 2011: about
+// 8-10 pJ per FMA-class op at 65 nm), applied per op, and the same for a fused pipeline
+// stage-op.
+struct EnergyConfig {
+  double register_file_access_nj = 0.008;
+  double fp_add_nj = 0.009;
+  double fp_mul_nj = 0.009;
+  double fp_cmp_nj = 0.002;
+  double fp_div_nj = 0.05;      // iterative: many add/shift steps
+  double fp_inv_sqrt_nj = 0.05;
+  double int_mul_nj = 0.005;
+  double int_div_nj = 0.03;
+  double box_test_nj = 0.108;       // 6 mul + 6 add of the box pipeline
+  double triangle_test_nj = 0.20;   // the multiplies and adds of one Plücker test
+  void validate() const;
+};
+
+struct ChipConfig {
+  DesignConfig design;
+  double clock_ghz = 1.0;
+  uint32_t tms = 128;
+  uint32_t tps_per_tm = 32;
+  uint32_t tp_stack_bytes = 2048;   // per-TP local memory for the stack (not cached)
+  uint32_t global_register_latency_cycles = 4;
+  TimingConfig timing;
+  tm::TmConfig tm;
+  memory::L1DataCacheConfig l1d;
+  memory::L1InstructionCacheConfig l1i;
+  memory::L2Config l2;
+  memory::StreamMemoryConfig stream;
+  memory::DramConfig dram;
+  memory::InterconnectConfig interconnect;
+  EnergyConfig energy;
+
+  // Derives the fields that must agree (TP counts in the TM and stream configs, the
+  // interconnect's L2 banks and ports), then checks everything; throws ConfigError naming the
+  // field.
+  void finalize();
+  uint32_t threads() const { return tms * tps_per_tm; }
+  void bind(ConfigBinder& b);
+};
+
+// Defaults, then the file, then each override in order; then finalize(). Errors name the file
+// (or the override) and the field.
+ChipConfig load_chip_config(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+nlohmann::json to_json(ChipConfig config);
+
+}  // namespace strata::chip

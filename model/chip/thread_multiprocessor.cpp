@@ -1,0 +1,317 @@
+#include "model/chip/thread_multiprocessor.h"
+
+#include <cstdio>
+#include <cstring>
+#include <queue>
+#include <utility>
+
+#include "model/iss/hart_impl.h"
+
+namespace strata::chip {
+
+using transport::AccessClass;
+using transport::Cycle;
+using transport::MemoryExtension;
+using transport::StreamStatus;
+
+struct ThreadMultiprocessor::Tp {
+  Tp(iss::CodeImage& code, memory::SparseMemory& backing, const TmEnvironment& env,
+     ThreadMultiprocessor* hook, uint32_t thread, uint32_t tp, uint32_t tm, const tm::OpTimingTable& table)
+      : memory(backing, env.guest_low, env.guest_high),
+        hart(code, memory, hook, thread),
+        timing(table),
+        pipe(iss::FunctionalStrataHook::Config{tp, tm, env.config->tps_per_tm, env.config->tms, 0}),
+        thread_id(thread),
+        stack_lo(env.stacks_base + thread * env.config->tp_stack_bytes),
+        stack_hi(stack_lo + env.config->tp_stack_bytes) {}
+  TpMemory memory;
+  iss::Hart<TpMemory> hart;
+  tm::TpTiming timing;
+  iss::FunctionalStrataHook pipe;  // this TP's pipeline input registers and last test
+  uint32_t thread_id;
+  uint32_t stack_lo, stack_hi;
+  uint32_t fetch_line = 0xFFFFFFFFu;
+};
+
+ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const TmEnvironment& env,
+                                           uint32_t tm_id)
+    : sc_core::sc_module(name),
+      env_(env),
+      config_(*env.config),
+      tm_id_(tm_id),
+      clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
+      op_table_(env.config->tm),
+      xus_(env.config->tm) {
+  for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
+    const uint32_t thread = tm_id * config_.tps_per_tm + tp;
+    tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
+    Tp& t = *tps_.back();
+    t.hart.reset(env.entry_pc);
+    t.hart.set_x(2, t.stack_hi);  // crt0 keeps a preset sp
+    if (env.tohost) t.hart.set_tohost(env.tohost);
+  }
+  tr_mode_ = trace_.add_level("pipeline_mode");
+  tr_instructions_ = trace_.add_rate("instructions");
+  tr_box_ = trace_.add_rate("box_tests");
+  tr_triangle_ = trace_.add_rate("triangle_tests");
+  tr_treelet_ = trace_.add_level("treelet");
+  SC_THREAD(run);
+}
+
+ThreadMultiprocessor::~ThreadMultiprocessor() = default;
+
+void ThreadMultiprocessor::trace(sc_core::sc_trace_file* file, Cycle window_cycles) {
+  trace_.open(file, name(), window_cycles);
+}
+
+tm::TpStats ThreadMultiprocessor::tp_stats() const {
+  tm::TpStats sum;
+  for (const auto& tp : tps_) {
+    const tm::TpStats& s = tp->timing.stats();
+    sum.issued += s.issued;
+    sum.fetches += s.fetches;
+    for (size_t i = 0; i < sum.issued_by_class.size(); ++i) sum.issued_by_class[i] += s.issued_by_class[i];
+    for (size_t i = 0; i < sum.stall_cycles.size(); ++i) sum.stall_cycles[i] += s.stall_cycles[i];
+    sum.int_reads += s.int_reads;
+    sum.int_writes += s.int_writes;
+    sum.fp_reads += s.fp_reads;
+    sum.fp_writes += s.fp_writes;
+  }
+  return sum;
+}
+
+iss::Counters ThreadMultiprocessor::iss_counters() const {
+  iss::Counters sum;
+  for (const auto& tp : tps_) sum += tp->hart.counters();
+  return sum;
+}
+
+void ThreadMultiprocessor::fail(const Tp& tp, const std::string& what) {
+  char where[96];
+  std::snprintf(where, sizeof where, "TM %u, TP %u (thread %u), pc 0x%08x: ", tm_id_,
+                tp.thread_id % config_.tps_per_tm, tp.thread_id, tp.hart.pc());
+  error_ = where + what;
+  sc_core::sc_stop();
+}
+
+void ThreadMultiprocessor::sync_to(Cycle t) {
+  const Cycle now = clock_.now();
+  const bool precise = config_.timing.mode == transport::TimingMode::kPrecise;
+  if (t > now && (precise || t - now >= config_.timing.quantum_cycles)) {
+    sc_core::wait(clock_.delay_until(t));
+    xus_.retire_before(clock_.now());
+  }
+}
+
+void ThreadMultiprocessor::run() {
+  using Entry = std::pair<Cycle, uint32_t>;  // (next issue cycle, TP): ties go to the lower TP
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> ready;
+  for (uint32_t i = 0; i < tps_.size(); ++i) ready.push({0, i});
+  while (!ready.empty() && error_.empty()) {
+    const auto [cycle, index] = ready.top();
+    ready.pop();
+    sync_to(cycle);
+    Tp& tp = *tps_[index];
+    if (step(tp)) {
+      ready.push({tp.timing.next_issue(), index});
+    } else {
+      counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
+    }
+  }
+  finished_ = error_.empty();
+}
+
+Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
+                                     AccessClass access, uint64_t addr, void* data, uint32_t bytes,
+                                     Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
+                                     MemoryExtension* result) {
+  transport::PooledPayload gp(pool_);
+  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
+  gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  gp->set_address(addr);
+  gp->set_data_ptr(static_cast<unsigned char*>(data));
+  gp->set_data_length(bytes);
+  gp->set_streaming_width(bytes);
+  gp->set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  MemoryExtension& ext = gp.ext();
+  ext.initiator_id = tp.thread_id;
+  ext.tm_id = tm_id_;
+  ext.access = access;
+  ext.timing_only = timing_only;
+  ext.treelet = treelet;
+  ext.reset_response();
+  sc_core::sc_time delay = clock_.delay_until(at);
+  port->b_transport(*gp, delay);
+  if (gp->get_response_status() != tlm::TLM_OK_RESPONSE) {
+    fail(tp, "memory access to 0x" + [&] {
+      char b[16];
+      std::snprintf(b, sizeof b, "%08llx", static_cast<unsigned long long>(addr));
+      return std::string(b);
+    }() + " was refused: " + gp->get_response_string());
+    return at;
+  }
+  if (result) *result = ext;
+  return clock_.request_cycle(delay);
+}
+
+Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
+  // A TP fetches through a one-line buffer: only a change of I-cache line goes to the cache.
+  const uint32_t line = pc / config_.l1i.line_bytes;
+  if (line == tp.fetch_line) return 0;
+  tp.fetch_line = line;
+  ++counters_.icache_fetch_requests;
+  uint32_t word = 0;
+  return transact(fetch_port, AccessClass::kInstructionFetch, pc, &word, 4, tp.timing.next_issue(), true,
+                  transport::kNoTreelet, tp, nullptr);
+}
+
+Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
+  const AccessRecord& r = tp.memory.record();
+  const uint32_t stacks_end = env_.stacks_base + config_.threads() * config_.tp_stack_bytes;
+  if (r.first >= env_.stacks_base && r.first < stacks_end) {
+    if (r.first < tp.stack_lo || r.last > tp.stack_hi) {
+      fail(tp, "stack access outside this TP's " + std::to_string(config_.tp_stack_bytes) +
+                   "-byte local memory (stack overflow? raise tp_stack_bytes)");
+      return at;
+    }
+    ++counters_.local_accesses;
+    return at + 1;  // TP local memory: one cycle, no cache, no contention
+  }
+  ++counters_.l1_requests;
+  uint8_t scratch[64];
+  const uint32_t bytes = std::min<uint32_t>(r.last - r.first, sizeof scratch);
+  return transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, r.first, scratch,
+                  bytes, at, true, transport::kNoTreelet, tp, nullptr);
+}
+
+bool ThreadMultiprocessor::step(Tp& tp) {
+  const iss::Decoded* d = tp.hart.next_instruction();
+  if (d == nullptr) {
+    fail(tp, "the pc left the firmware's code");
+    return false;
+  }
+  const Cycle fetch_ready = fetch(tp, tp.hart.pc());
+  const bool memory_like = tp.timing.is_memory(*d);
+  const Cycle earliest = memory_like ? tp.timing.begin_memory(*d, fetch_ready) : 0;
+  const iss::Decoded decoded = *d;  // the hart may rewrite the code image (self-modifying code)
+  tp.memory.record().clear();
+  current_ = &tp;
+  request_cycle_ = earliest;
+  hook_timed_ = false;
+  const iss::RunResult r = tp.hart.run(1);
+  current_ = nullptr;
+  if (!error_.empty()) return false;
+  const bool stopped = r.reason != iss::StopReason::kInstructionLimit;
+  if (stopped && !r.ok()) {
+    fail(tp, "firmware stopped: " + iss::describe(r));
+    return false;
+  }
+  ++counters_.instructions;
+  if (trace_.enabled()) trace_.count(tr_instructions_, 1, clock_.now());
+  if (memory_like) {
+    Cycle ready = earliest + 1;
+    if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
+    if (hook_timed_) ready = std::max(ready, hook_ready_);
+    tp.timing.complete_memory(decoded, earliest, ready);
+  } else {
+    tp.timing.issue(decoded, fetch_ready, xus_);
+    if (trace_.enabled()) {
+      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, clock_.now());
+      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, clock_.now());
+      if (iss::op_info(decoded.op).cls == iss::InstrClass::kStrataPipeConfig)
+        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), clock_.now());
+    }
+  }
+  return !stopped && error_.empty();
+}
+
+iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
+  iss::HookResult result;
+  Tp& tp = *current_;
+  const uint32_t tp_index = tp.thread_id % config_.tps_per_tm;
+  switch (call.op) {
+    case iss::Op::kStThreadId: result.dest[0] = tp.thread_id; return result;
+    case iss::Op::kStTpId: result.dest[0] = tp_index; return result;
+    case iss::Op::kStTmId: result.dest[0] = tm_id_; return result;
+    case iss::Op::kStThreadCount: result.dest[0] = config_.threads(); return result;
+    case iss::Op::kStTpsPerTm: result.dest[0] = config_.tps_per_tm; return result;
+    case iss::Op::kStTmCount: result.dest[0] = config_.tms; return result;
+    case iss::Op::kStAtomicInc:
+    case iss::Op::kStAtomicAdd:
+    case iss::Op::kStGlobalRead:
+    case iss::Op::kStGlobalWrite: {
+      if (call.rs1 >= env_.globals->values.size()) {
+        result.status = iss::HookStatus::kIllegal;
+        result.message = "global register index out of range";
+        return result;
+      }
+      uint32_t& g = env_.globals->values[call.rs1];
+      result.dest[0] = g;
+      if (call.op == iss::Op::kStAtomicInc) g += 1;
+      if (call.op == iss::Op::kStAtomicAdd) g += call.rs2;
+      if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
+      ++env_.globals->operations;
+      ++counters_.global_register_ops;
+      hook_timed_ = true;
+      hook_ready_ = request_cycle_ + config_.global_register_latency_cycles;
+      return result;
+    }
+    case iss::Op::kStStreamCapacity:
+    case iss::Op::kStStreamPush:
+    case iss::Op::kStStreamPop:
+    case iss::Op::kStStreamAssign: return execute_stream(call);
+    default: return tp.pipe.execute(call);  // pipeline configuration, inputs and fused tests
+  }
+}
+
+iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) {
+  iss::HookResult result;
+  Tp& tp = *current_;
+  if (!config_.design.streams) {
+    result.status = iss::HookStatus::kIllegal;
+    result.message = "stream memory operations need a design with streams (design.streams)";
+    return result;
+  }
+  MemoryExtension ext;
+  uint8_t scratch[48] = {};
+  ++counters_.stream_requests;
+  switch (call.op) {
+    case iss::Op::kStStreamCapacity:
+      hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,
+                             transport::kNoTreelet, tp, &ext);
+      result.dest[0] = ext.result;
+      break;
+    case iss::Op::kStStreamPush:
+      std::memcpy(scratch, call.in, 48);
+      hook_ready_ = transact(stream_port, AccessClass::kStreamPush, 0, scratch, 48, request_cycle_, false,
+                             call.rs2, tp, &ext);
+      result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
+      if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
+      break;
+    case iss::Op::kStStreamPop:
+      hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, 48, request_cycle_, false,
+                             transport::kNoTreelet, tp, &ext);
+      result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
+      if (result.dest[0]) {
+        std::memcpy(call.out, scratch, 48);
+        result.status = iss::HookStatus::kStore;
+      }
+      break;
+    default:  // kStStreamAssign
+      hook_ready_ = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, request_cycle_, false,
+                             transport::kNoTreelet, tp, &ext);
+      result.dest[0] = ext.result;
+      current_treelet_ = ext.result;
+      if (trace_.enabled())
+        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), clock_.now());
+      break;
+  }
+  hook_timed_ = true;
+  return result;
+}
+
+}  // namespace strata::chip
+
+namespace strata::iss {
+template class Hart<strata::chip::TpMemory>;
+}

@@ -1,0 +1,122 @@
+// A thread multiprocessor: its TPs (functional harts with in-order issue timing), the XU
+// crossbar with the fused pipelines, and sockets to its L1 data cache, L1 instruction cache
+// and (through the interconnect) the ray stream memory.
+//
+// One SC_THREAD runs all the TPs of the TM: it always steps the TP whose next issue cycle is
+// earliest, so TPs compete for the TM's XUs in time order. The TM runs ahead of global time
+// by at most the quantum (loosely timed) or waits for global time at every cycle it issues in
+// (precise). A TP that has halted leaves the schedule and costs nothing; one that is stalled
+// is simply scheduled at the cycle it can issue again, so no cycle is ever ticked idly.
+//
+// Each instruction is first executed functionally (the hart; loads and stores go to the
+// sparse backing store), then timed: its fetch (I-cache, on a change of cache line), its
+// operands (scoreboard), its unit (XU crossbar) or its memory access (L1 socket, the TP's
+// local stack memory, the stream memory, or the global registers).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "model/chip/chip_config.h"
+#include "model/chip/global_registers.h"
+#include "model/chip/tp_memory.h"
+#include "model/iss/functional_strata_hook.h"
+#include "model/iss/hart.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/window_trace.h"
+#include "model/tm/tp_timing.h"
+#include "model/tm/xu_crossbar.h"
+#include "tlm/clock.h"
+#include "tlm/payload_pool.h"
+
+namespace strata::chip {
+
+// What the chip hands every TM: shared state and the guest memory map.
+struct TmEnvironment {
+  const ChipConfig* config = nullptr;
+  memory::SparseMemory* backing = nullptr;
+  iss::CodeImage* code = nullptr;
+  GlobalRegisters* globals = nullptr;
+  uint32_t entry_pc = 0;
+  uint32_t tohost = 0;       // 0: none
+  uint32_t guest_low = 0;    // lowest valid data address (above the null page)
+  uint64_t guest_high = 0;   // one past the highest
+  uint32_t stacks_base = 0;  // thread t's stack: [stacks_base + t * stack, + stack)
+};
+
+struct TmCounters {
+  uint64_t instructions = 0;
+  uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
+  uint64_t local_accesses = 0;         // stack accesses served by TP local memory
+  uint64_t l1_requests = 0;
+  uint64_t stream_requests = 0, stream_push_full = 0;
+  uint64_t global_register_ops = 0;
+  transport::Cycle finished_cycle = 0;
+};
+
+class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook {
+ public:
+  tlm_utils::simple_initiator_socket<ThreadMultiprocessor> data_port{"data_port"};
+  tlm_utils::simple_initiator_socket<ThreadMultiprocessor> fetch_port{"fetch_port"};
+  tlm_utils::simple_initiator_socket<ThreadMultiprocessor> stream_port{"stream_port"};
+
+  SC_HAS_PROCESS(ThreadMultiprocessor);
+  ThreadMultiprocessor(sc_core::sc_module_name name, const TmEnvironment& env, uint32_t tm_id);
+  ~ThreadMultiprocessor() override;
+
+  const TmCounters& counters() const { return counters_; }
+  const tm::XuCrossbar& xus() const { return xus_; }
+  tm::TpStats tp_stats() const;  // summed over the TM's TPs
+  iss::Counters iss_counters() const;
+  bool failed() const { return !error_.empty(); }
+  const std::string& error() const { return error_; }
+  bool finished() const { return finished_; }
+
+  // VCD: pipeline mode, fused ops and instructions per window, current treelet.
+  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+
+ private:
+  struct Tp;
+  void run();
+  void sync_to(transport::Cycle t);
+  bool step(Tp& tp);  // false: the TP is done (halted, or failed)
+  transport::Cycle fetch(Tp& tp, uint32_t pc);
+  transport::Cycle time_data_access(Tp& tp, transport::Cycle at);
+  transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
+                            transport::AccessClass access, uint64_t addr, void* data, uint32_t bytes,
+                            transport::Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
+                            transport::MemoryExtension* result);
+  void fail(const Tp& tp, const std::string& what);
+
+  iss::HookResult execute(const iss::HookCall& call) override;
+  iss::HookResult execute_stream(const iss::HookCall& call);
+
+  TmEnvironment env_;
+  const ChipConfig& config_;
+  uint32_t tm_id_;
+  transport::Clock clock_;
+  transport::PayloadPool pool_;
+  tm::OpTimingTable op_table_;
+  tm::XuCrossbar xus_;
+  std::vector<std::unique_ptr<Tp>> tps_;
+  TmCounters counters_;
+  std::string error_;
+  bool finished_ = false;
+
+  // The instruction being executed, for the hook.
+  Tp* current_ = nullptr;
+  transport::Cycle request_cycle_ = 0;
+  transport::Cycle hook_ready_ = 0;
+  bool hook_timed_ = false;
+  uint32_t current_treelet_ = 0xFFFFFFFFu;
+
+  memory::WindowTrace trace_;
+  std::size_t tr_mode_ = 0, tr_instructions_ = 0, tr_box_ = 0, tr_triangle_ = 0, tr_treelet_ = 0;
+};
+
+}  // namespace strata::chip

@@ -1,0 +1,125 @@
+// `strata-sim run`: one frame on a simulated chip. Loads a design config (plus --set
+// overrides), the scene and its image (treelets sized to the L1), runs the design's firmware
+// kernel on every TP of the chip, and writes the image, the statistics and optionally a VCD.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "model/chip/chip.h"
+#include "model/chip/chip_report.h"
+#include "sim/commands.h"
+#include "sim/image_output.h"
+#include "sim/iss_render.h"
+#include "sim/native_render.h"
+#include "sim/resolution.h"
+#include "sim/scene_source.h"
+
+namespace strata::sim {
+namespace {
+
+struct RunOptions {
+  std::string config_file;
+  std::vector<std::string> overrides;
+  SceneSourceOptions source;
+  std::string resolution = "256x256";
+  RenderSettings settings;
+  std::string out_dir = "out/run";
+  std::string firmware;  // default: the design's kernel
+  std::string vcd;
+  uint64_t vcd_window_cycles = 1000;
+  bool check = false;
+};
+
+// The kernel each design runs (firmware/kernels/<name>_main.cpp).
+std::string kernel_for(const chip::ChipConfig& c) {
+  if (!c.design.streams) return "baseline";
+  return c.design.pipelines ? "streams_pipelines" : "streams";
+}
+
+void run_frame(RunOptions o) {
+  parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
+  check_render_settings(o.settings);
+  const chip::ChipConfig config = chip::load_chip_config(o.config_file, o.overrides);
+  // Treelets are exactly one L1 data cache (ARCHITECTURE.md, "Treelets").
+  o.source.params.treelet_bytes = config.l1d.size_bytes;
+  const LoadedScene loaded = load_scene_and_image(o.source);
+  if (o.firmware.empty()) o.firmware = default_kernel_elf(kernel_for(config));
+  if (!std::filesystem::exists(o.firmware))
+    throw std::runtime_error(o.firmware + ": kernel firmware not found (built by the RISC-V toolchain; the " +
+                             kernel_for(config) + " kernel may not exist yet)");
+
+  chip::FrameInputs inputs;
+  inputs.kernel_elf = o.firmware;
+  inputs.scene_image = loaded.image.bytes();
+  inputs.scene_image_bytes = loaded.image.size_bytes();
+  inputs.treelet_bytes = loaded.image.header().treelet_bytes;
+  inputs.frame = make_frame_params(loaded.image.header(), o.settings);
+  chip::Chip chip("chip", config, inputs);
+
+  sc_core::sc_trace_file* vcd = nullptr;
+  if (!o.vcd.empty()) {
+    std::string base = o.vcd;
+    if (base.size() > 4 && base.substr(base.size() - 4) == ".vcd") base.resize(base.size() - 4);
+    vcd = sc_core::sc_create_vcd_trace_file(base.c_str());
+    vcd->set_time_unit(1, sc_core::SC_NS);
+    chip.trace(vcd, o.vcd_window_cycles);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  sc_core::sc_start();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (vcd) sc_core::sc_close_vcd_trace_file(vcd);
+  if (!chip.finished()) throw std::runtime_error("simulation failed: " + chip.error());
+
+  const nlohmann::json report = chip::chip_report(chip, wall);
+  const std::filesystem::path dir(o.out_dir);
+  std::filesystem::create_directories(dir);
+  const std::vector<kernels::Pixel> image = chip.framebuffer();
+  write_exr(dir / "image.exr", o.settings.width, o.settings.height, image);
+  write_png_preview(dir / "image.png", o.settings.width, o.settings.height, image);
+  std::ofstream(dir / "stats.json") << report.dump(2) << "\n";
+  std::printf("%s", chip::summary_text(report).c_str());
+  std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
+              o.vcd.empty() ? "" : ", ", o.vcd.c_str());
+
+  if (o.check) {
+    const RenderResult twin = render_native(loaded.image, o.settings);
+    const kernels::RayCounters chip_rays = chip.ray_counters();
+    const bool same_image =
+        std::memcmp(twin.image.data(), image.data(), image.size() * sizeof(kernels::Pixel)) == 0;
+    bool same_rays = chip_rays.paths == twin.counters.paths;
+    for (uint32_t t = 0; t < kernels::kRayTypes; ++t)
+      same_rays = same_rays && chip_rays.rays[t] == twin.counters.rays[t] && chip_rays.hits[t] == twin.counters.hits[t];
+    std::printf("check          image %s the native twin's; rays and hits by type %s\n",
+                same_image ? "bit-identical to" : "DIFFERS from", same_rays ? "equal" : "DIFFER");
+    if (!same_image || !same_rays) throw std::runtime_error("the chip's frame does not match the native twin");
+  }
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("run", "Simulate one frame on a chip design");
+  auto opts = std::make_shared<RunOptions>();
+  cmd->add_option("--config", opts->config_file, "design config (sim/configs/*.json)")->required();
+  cmd->add_option("--set", opts->overrides, "override a config field: path=value (repeatable)");
+  cmd->add_option("--scene", opts->source.scene, "scene spec, as for `scene info`")->required();
+  cmd->add_option("--res", opts->resolution, "image size WxH")->capture_default_str();
+  cmd->add_option("--spp", opts->settings.samples_per_pixel, "samples per pixel")->capture_default_str();
+  cmd->add_option("--max-path-vertices", opts->settings.max_path_vertices, "closest-hit segments per path")
+      ->capture_default_str();
+  cmd->add_option("--seed", opts->settings.seed, "random seed of the frame")->capture_default_str();
+  cmd->add_option("--out", opts->out_dir, "output folder")->capture_default_str();
+  cmd->add_option("--firmware", opts->firmware, "kernel ELF (default: the design's kernel)");
+  cmd->add_option("--vcd", opts->vcd, "write a VCD waveform to this file");
+  cmd->add_option("--vcd-window", opts->vcd_window_cycles, "VCD sampling window in cycles")->capture_default_str();
+  cmd->add_flag("--check", opts->check, "also render with the native twin and require identical results");
+  cmd->add_option("--cache-dir", opts->source.cache_dir, "scene image cache");
+  cmd->add_flag("--no-cache", opts->source.no_cache, "always build the scene image");
+  cmd->callback([opts] { run_frame(*opts); });
+}
+
+}  // namespace strata::sim
