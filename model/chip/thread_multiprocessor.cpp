@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <queue>
 #include <utility>
 
 #include "model/iss/hart_impl.h"
@@ -95,27 +94,43 @@ void ThreadMultiprocessor::fail(const Tp& tp, const std::string& what) {
 }
 
 void ThreadMultiprocessor::sync_to(Cycle t) {
-  const Cycle now = clock_.now();
+  // Global time cannot move while this thread runs, so it is read only after a wait.
   const bool precise = config_.timing.mode == transport::TimingMode::kPrecise;
-  if (t > now && (precise || t - now >= config_.timing.quantum_cycles)) {
+  if (t > global_cycle_ && (precise || t - global_cycle_ >= config_.timing.quantum_cycles)) {
     sc_core::wait(clock_.delay_until(t));
-    xus_.retire_before(clock_.now());
+    global_cycle_ = clock_.now();
+    xus_.retire_before(global_cycle_);
   }
 }
 
 void ThreadMultiprocessor::run() {
-  using Entry = std::pair<Cycle, uint32_t>;  // (next issue cycle, TP): ties go to the lower TP
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> ready;
-  for (uint32_t i = 0; i < tps_.size(); ++i) ready.push({0, i});
-  while (!ready.empty() && error_.empty()) {
-    const auto [cycle, index] = ready.top();
-    ready.pop();
-    sync_to(cycle);
+  // The TP with the earliest next issue cycle goes next (ties: the lower TP). A linear scan
+  // of at most 64 cycles is cheaper than a heap here, and finding the runner-up in the same
+  // pass lets the chosen TP keep issuing until it passes the runner-up, one scan per burst.
+  // Keys are (cycle << 6) | tp, so one integer min finds the earliest TP and breaks ties by
+  // index, without branches the host could mispredict.
+  constexpr Cycle kDone = ~Cycle{0};
+  std::vector<Cycle> key(tps_.size());
+  for (uint32_t i = 0; i < key.size(); ++i) key[i] = i;
+  global_cycle_ = clock_.now();
+  for (;;) {
+    Cycle best = kDone, second = kDone;
+    for (const Cycle k : key) {
+      second = std::min(second, std::max(best, k));
+      best = std::min(best, k);
+    }
+    if (best == kDone || !error_.empty()) break;
+    const uint32_t index = static_cast<uint32_t>(best & 63u);
+    const Cycle until = second == kDone ? kDone : second >> 6;
     Tp& tp = *tps_[index];
-    if (step(tp)) {
-      ready.push({tp.timing.next_issue(), index});
-    } else {
-      counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
+    for (Cycle t = best >> 6; t <= until; t = tp.timing.next_issue()) {
+      sync_to(t);
+      if (!step(tp)) {
+        counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
+        key[index] = kDone;
+        break;
+      }
+      key[index] = (tp.timing.next_issue() << 6) | index;
     }
   }
   finished_ = error_.empty();
@@ -207,7 +222,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     return false;
   }
   ++counters_.instructions;
-  if (trace_.enabled()) trace_.count(tr_instructions_, 1, clock_.now());
+  if (trace_.enabled()) trace_.count(tr_instructions_, 1, global_cycle_);
   if (memory_like) {
     Cycle ready = earliest + 1;
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
@@ -216,10 +231,10 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   } else {
     tp.timing.issue(decoded, fetch_ready, xus_);
     if (trace_.enabled()) {
-      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, clock_.now());
-      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, clock_.now());
+      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, global_cycle_);
+      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, global_cycle_);
       if (iss::op_info(decoded.op).cls == iss::InstrClass::kStrataPipeConfig)
-        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), clock_.now());
+        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), global_cycle_);
     }
   }
   return !stopped && error_.empty();
@@ -303,7 +318,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       result.dest[0] = ext.result;
       current_treelet_ = ext.result;
       if (trace_.enabled())
-        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), clock_.now());
+        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), global_cycle_);
       break;
   }
   hook_timed_ = true;

@@ -107,6 +107,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmCounters counters_;
   std::string error_;
   bool finished_ = false;
+  transport::Cycle global_cycle_ = 0;  // global time, as of this thread's last wait
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;
