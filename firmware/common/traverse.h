@@ -45,50 +45,98 @@ struct NullObserver {
 
 namespace detail {
 
-// Returns true when an any-hit (occlusion) query may stop.
-template <bool kAnyHit, class Memory, class Observer>
-inline bool test_leaf(const Memory& mem, uint32_t ref, const TraceRay& ray, ClosestHit* best,
-                      BoxRay* box_ray, Observer& obs) {
-  obs.leaf_visited(ref);
-  const uint32_t count = leaf_count(ref);
-  const uint32_t offset = leaf_byte_offset(ref);
-  for (uint32_t i = 0; i < count; ++i) {
-    const uint32_t tri_offset = offset + i * uint32_t(sizeof(TriangleRecord));
-    const TriangleRecord& tri = mem.triangle(tri_offset);
-    obs.triangle_tested();
-    TrianglePartial partial;
-    if (!triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin,
-                           ray.dir, &partial))
-      continue;
-    const TriangleHit h = triangle_finish(partial);
-    // Strictly closer wins, so among equal distances the first one found is kept.
-    if (h.t > ray.tmin && h.t < box_ray->tmax) {
-      *best = {true, h.t, h.b1, h.b2, tri.primitive, tri.material, tri_offset};
-      box_ray->tmax = h.t;
-      if (kAnyHit) return true;
-    }
-  }
-  return false;
-}
-
 // The ray was checked once by traverse(), so the per-box validity test is skipped.
 STRATA_INLINE bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_entry) {
   if (child_is_leaf(n.child[side]) && leaf_count(n.child[side]) == 0) return false;
   return intersect_box_valid_ray(n.child_min[side], n.child_max[side], r, t_entry);
 }
 
-template <bool kAnyHit, class Memory, class Observer>
-inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray, Observer& obs) {
-  ClosestHit best = {false, ray.tmax, 0.0f, 0.0f, 0u, 0u, 0u};
-  BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, ray.tmax};
-  if (!box_ray_is_valid(box_ray)) return best;  // intersect_box would reject every box
-  uint32_t node = root;
-  uint32_t stack = 0;
-  int returning_from = -1;  // -1: entering node; 0 or 1: that child's subtree is done
+}  // namespace detail
 
-  for (;;) {
-    const BvhNode& n = mem.node(node);
-    obs.node_visited(node);
+// The whole state of a ray's traversal: small enough to live in a 48-byte stream-memory ray,
+// so a streaming kernel can suspend it where the ray leaves a treelet and resume it on another
+// TM. traverse() below runs the same state machine to the end in one go; both make exactly
+// the same decisions, so every kernel computes the same hits and statistics.
+enum TraversalPhase : uint32_t {
+  kEnterNode = 0,    // test both children's boxes of `node`
+  kReturnLeft = 1,   // the left child's subtree of `node` is done
+  kReturnRight = 2,  // the right child's subtree of `node` is done
+  kAtLeaf = 3,       // test the triangles of leaf `pending`, child `leaf_side` of `node`
+  kAscend = 4,       // return to `node` (the parent) from its child `pending`
+  kTraversalDone = 5
+};
+
+constexpr uint32_t kNoTriangle = 0xFFFFFFFFu;
+
+struct TraversalState {
+  uint32_t node;
+  uint32_t stack;
+  uint32_t phase;      // TraversalPhase
+  uint32_t pending;    // kAtLeaf: the leaf reference; kAscend: the child we come from
+  uint32_t leaf_side;  // kAtLeaf: which child of `node` the leaf is
+  float t_best;        // closest hit so far (starts at the ray's tmax)
+  uint32_t hit_triangle;  // byte offset of the closest triangle, or kNoTriangle
+};
+
+inline TraversalState start_traversal(uint32_t root, const TraceRay& ray) {
+  const BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, ray.tmax};
+  // An invalid ray would be rejected by every box: it is done before it starts.
+  const uint32_t phase = box_ray_is_valid(box_ray) ? kEnterNode : kTraversalDone;
+  return {root, 0u, phase, 0u, 0u, ray.tmax, kNoTriangle};
+}
+
+// Where a traversal may run: Bounds::node_here(index) and leaf_here(leaf_ref) say whether the
+// next node or leaf lies in memory the caller holds (its treelet); when not, advance() stops
+// with the state pointing at it. EverywhereBounds never stops.
+struct EverywhereBounds {
+  bool node_here(uint32_t) const { return true; }
+  bool leaf_here(uint32_t) const { return true; }
+};
+
+// Runs the traversal until it is done or needs memory outside `bounds`.
+template <bool kAnyHit, class Memory, class Observer, class Bounds>
+inline void advance(const Memory& mem, TraversalState& s, const TraceRay& ray, Observer& obs,
+                    const Bounds& bounds) {
+  BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, s.t_best};
+  while (s.phase != kTraversalDone) {
+    if (s.phase == kAtLeaf) {
+      const uint32_t ref = s.pending;
+      obs.leaf_visited(ref);
+      const uint32_t count = leaf_count(ref);
+      const uint32_t offset = leaf_byte_offset(ref);
+      bool stop = false;
+      for (uint32_t i = 0; i < count && !stop; ++i) {
+        const uint32_t tri_offset = offset + i * uint32_t(sizeof(TriangleRecord));
+        const TriangleRecord& tri = mem.triangle(tri_offset);
+        obs.triangle_tested();
+        TrianglePartial partial;
+        if (!triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin,
+                               ray.dir, &partial))
+          continue;
+        const TriangleHit h = triangle_finish(partial);
+        // Strictly closer wins, so among equal distances the first one found is kept.
+        if (h.t > ray.tmin && h.t < s.t_best) {
+          s.t_best = h.t;
+          s.hit_triangle = tri_offset;
+          box_ray.tmax = h.t;
+          stop = kAnyHit;
+        }
+      }
+      if (stop) {
+        s.phase = kTraversalDone;
+        break;
+      }
+      s.phase = s.leaf_side == 0 ? kReturnLeft : kReturnRight;
+      if (!bounds.node_here(s.node)) return;
+      continue;
+    }
+
+    const BvhNode& n = mem.node(s.node);
+    obs.node_visited(s.node);
+    int returning_from = -1;
+    if (s.phase == kAscend) returning_from = n.child[0] == s.pending ? 0 : 1;
+    else if (s.phase != kEnterNode) returning_from = s.phase == kReturnLeft ? 0 : 1;
+
     int go = -1;  // child to visit next, or -1 to leave this node
     if (returning_from < 0) {
       float t0 = 0.0f, t1 = 0.0f;
@@ -99,36 +147,63 @@ inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray
         // With one child hit, the bit names the other side, as if it had gone first: the
         // return then pops at once instead of re-testing a box that already missed.
         const int first = (hit0 && hit1) ? go : 1 - go;
-        stack = (stack << 1) | (first == 0 ? 1u : 0u);
+        s.stack = (s.stack << 1) | (first == 0 ? 1u : 0u);
       }
     } else {
-      const int first = (stack & 1u) ? 0 : 1;
+      const int first = (s.stack & 1u) ? 0 : 1;
       float t_other = 0.0f;
-      if (first == returning_from &&
-          detail::child_box_hit(n, 1 - returning_from, box_ray, &t_other))
+      if (first == returning_from && detail::child_box_hit(n, 1 - returning_from, box_ray, &t_other))
         go = 1 - returning_from;  // the bit keeps naming the first side, so we pop later
       else
-        stack >>= 1;
+        s.stack >>= 1;
     }
 
     if (go >= 0) {
       const uint32_t ref = n.child[go];
       if (child_is_leaf(ref)) {
-        if (detail::test_leaf<kAnyHit>(mem, ref, ray, &best, &box_ray, obs)) break;
-        returning_from = go;
+        s.phase = kAtLeaf;
+        s.pending = ref;
+        s.leaf_side = uint32_t(go);
+        if (!bounds.leaf_here(ref)) return;
       } else {
-        node = ref;
-        returning_from = -1;
+        s.node = ref;
+        s.phase = kEnterNode;
+        if (!bounds.node_here(ref)) return;
       }
       continue;
     }
     // Leave this node: go up to the parent, or finish at the root.
-    if (n.parent == kNoParent) break;
-    const uint32_t child = node;
-    node = n.parent;
-    returning_from = mem.node(node).child[0] == child ? 0 : 1;
+    if (n.parent == kNoParent) {
+      s.phase = kTraversalDone;
+      break;
+    }
+    s.pending = s.node;
+    s.node = n.parent;
+    s.phase = kAscend;
+    if (!bounds.node_here(s.node)) return;
   }
-  return best;
+}
+
+// The hit record of a finished traversal. The barycentrics come from testing the hit
+// triangle once more: the test is deterministic, so they are the values found during the
+// traversal, and the state need not carry them.
+template <class Memory>
+inline ClosestHit finish_traversal(const Memory& mem, const TraversalState& s, const TraceRay& ray) {
+  if (s.hit_triangle == kNoTriangle) return {false, ray.tmax, 0.0f, 0.0f, 0u, 0u, 0u};
+  const TriangleRecord& tri = mem.triangle(s.hit_triangle);
+  TrianglePartial partial = {0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+  triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin, ray.dir, &partial);
+  const TriangleHit h = triangle_finish(partial);
+  return {true, s.t_best, h.b1, h.b2, tri.primitive, tri.material, s.hit_triangle};
+}
+
+namespace detail {
+
+template <bool kAnyHit, class Memory, class Observer>
+inline ClosestHit traverse(const Memory& mem, uint32_t root, const TraceRay& ray, Observer& obs) {
+  TraversalState s = start_traversal(root, ray);
+  advance<kAnyHit>(mem, s, ray, obs, EverywhereBounds{});
+  return finish_traversal(mem, s, ray);
 }
 
 }  // namespace detail
