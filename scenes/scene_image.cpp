@@ -100,12 +100,12 @@ BinaryBvh wrap_leaf_root(BinaryBvh bvh) {
 void write_child(BvhNode* node, int side, const BinaryBvh::Node& child, uint32_t ref) {
   if (child.is_leaf() && child.count == 0) {
     for (int a = 0; a < 3; ++a) {
-      node->child_min[side][a] = FLT_MAX;
-      node->child_max[side][a] = -FLT_MAX;
+      node->child_box[side][a] = FLT_MAX;
+      node->child_box[side][3 + a] = -FLT_MAX;
     }
   } else {
-    copy3(node->child_min[side], child.bounds.min);
-    copy3(node->child_max[side], child.bounds.max);
+    copy3(node->child_box[side], child.bounds.min);
+    copy3(node->child_box[side] + 3, child.bounds.max);
   }
   node->child[side] = ref;
 }

@@ -65,7 +65,7 @@ BvhStats bvh_stats(const SceneImage& image) {
     ++s.inner_nodes;
     for (int side = 0; side < 2; ++side) {
       const uint32_t ref = n.child[side];
-      const double rel = box_area(n.child_min[side], n.child_max[side]) / root_area;
+      const double rel = box_area(child_min(n, side), child_max(n, side)) / root_area;
       if (!child_is_leaf(ref)) {
         s.sah_cost += rel;
         continue;

@@ -9,7 +9,7 @@
 namespace strata {
 
 constexpr uint32_t kSceneImageMagic = 0x53525453u;  // "STRS" little-endian
-constexpr uint32_t kSceneImageVersion = 1;
+constexpr uint32_t kSceneImageVersion = 2;
 
 // The traversal stack is one 32-bit word with a bit per level, so no leaf may lie deeper
 // than 32 edges below the root. The builder guarantees it.
@@ -39,13 +39,17 @@ inline uint32_t make_leaf_ref(uint32_t byte_offset, uint32_t count) {
 // tests that decide where a ray goes next read only the current node, hence only the
 // current treelet. Leaves are not nodes: a leaf is a child reference to a triangle range.
 struct BvhNode {
-  float child_min[2][3];  // [0] left, [1] right; an empty child has min > max
-  float child_max[2][3];
+  // [0] left, [1] right: min xyz then max xyz, so one child's box is 6 contiguous floats,
+  // the operand of the box pipeline's strata.ldbox. An empty child has min > max.
+  float child_box[2][6];
   uint32_t child[2];      // child references (see above)
   uint32_t parent;        // node index of the parent, kNoParent at the root
   uint32_t treelet;       // id of the node treelet holding this node
 };
 static_assert(sizeof(BvhNode) == 64, "BvhNode must be one 64-byte line");
+
+inline const float* child_min(const BvhNode& n, int side) { return n.child_box[side]; }
+inline const float* child_max(const BvhNode& n, int side) { return n.child_box[side] + 3; }
 
 // A triangle as the triangle pipeline consumes it: three vertices, then identification.
 struct TriangleRecord {

@@ -48,7 +48,7 @@ namespace detail {
 // The ray was checked once by traverse(), so the per-box validity test is skipped.
 STRATA_INLINE bool child_box_hit(const BvhNode& n, int side, const BoxRay& r, float* t_entry) {
   if (child_is_leaf(n.child[side]) && leaf_count(n.child[side]) == 0) return false;
-  return intersect_box_valid_ray(n.child_min[side], n.child_max[side], r, t_entry);
+  return intersect_box_valid_ray(child_min(n, side), child_max(n, side), r, t_entry);
 }
 
 }  // namespace detail

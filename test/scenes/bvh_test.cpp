@@ -49,7 +49,7 @@ Walk walk_and_check(const SceneImage& img) {
           const TriangleRecord& t = img.triangle(leaf_byte_offset(ref) + i * 48);
           w.primitives.push_back(t.primitive);
           for (const float* v : {t.v0, t.v1, t.v2})
-            EXPECT_TRUE(box_inside(v, v, n.child_min[side], n.child_max[side]));
+            EXPECT_TRUE(box_inside(v, v, child_min(n, side), child_max(n, side)));
         }
         continue;
       }
@@ -57,7 +57,7 @@ Walk walk_and_check(const SceneImage& img) {
       EXPECT_EQ(c.parent, it.node) << "parent pointer of node " << ref;
       for (int cs = 0; cs < 2; ++cs) {
         if (child_is_leaf(c.child[cs]) && leaf_count(c.child[cs]) == 0) continue;
-        EXPECT_TRUE(box_inside(c.child_min[cs], c.child_max[cs], n.child_min[side], n.child_max[side]))
+        EXPECT_TRUE(box_inside(child_min(c, cs), child_max(c, cs), child_min(n, side), child_max(n, side)))
             << "child box of node " << ref << " escapes its parent's box";
       }
       stack.push_back({ref, it.depth + 1});
