@@ -53,7 +53,7 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   program.memory.write(uint32_t(base + d.image), image.bytes(), image.size_bytes());
   program.memory.write(uint32_t(base + d.frame), &frame, sizeof frame);
   const kernels::BootBlock boot{uint32_t(base + d.frame), uint32_t(base + d.image),
-                                uint32_t(base + d.framebuffer), uint32_t(base + d.counters)};
+                                uint32_t(base + d.framebuffer), uint32_t(base + d.counters), 0, 0, {0, 0}};
   program.memory.write(*boot_addr, &boot, sizeof boot);
 
   iss::FunctionalStrataHook hook;  // one hart: thread 0 of TM 0; global registers start at 0

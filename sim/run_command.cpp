@@ -43,10 +43,13 @@ std::string kernel_for(const chip::ChipConfig& c) {
 void run_frame(RunOptions o) {
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
-  const chip::ChipConfig config = chip::load_chip_config(o.config_file, o.overrides);
+  chip::ChipConfig config = chip::load_chip_config(o.config_file, o.overrides);
   // Treelets are exactly one L1 data cache (ARCHITECTURE.md, "Treelets").
   o.source.params.treelet_bytes = config.l1d.size_bytes;
   const LoadedScene loaded = load_scene_and_image(o.source);
+  // The stream memory keeps one buffer head per treelet of this scene.
+  config.stream.treelets = loaded.image.header().treelet_count;
+  config.finalize();
   if (o.firmware.empty()) o.firmware = default_kernel_elf(kernel_for(config));
   if (!std::filesystem::exists(o.firmware))
     throw std::runtime_error(o.firmware + ": kernel firmware not found (built by the RISC-V toolchain; the " +

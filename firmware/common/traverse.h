@@ -93,11 +93,33 @@ struct EverywhereBounds {
   bool leaf_here(uint32_t) const { return true; }
 };
 
+// How the box and triangle tests are computed: in general-purpose instructions
+// (SoftwareTests, intersect.h), or by the fused pipelines (the firmware's pipeline tester,
+// which the hardware computes with the same intersect.h, bit for bit). A Tests policy gets
+// the ray once per advance() and the new tmax whenever a closer hit shortens it.
+struct SoftwareTests {
+  BoxRay box_ray;
+  void begin(const TraceRay& ray, float tmax) {
+    box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, tmax};
+  }
+  void set_tmax(float tmax) { box_ray.tmax = tmax; }
+  bool box(const BvhNode& n, int side, float* t_entry) const {
+    return detail::child_box_hit(n, side, box_ray, t_entry);
+  }
+  bool triangle(const TriangleRecord& tri, const TraceRay& ray, TriangleHit* hit) const {
+    TrianglePartial partial;
+    if (!triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin, ray.dir, &partial))
+      return false;
+    *hit = triangle_finish(partial);
+    return true;
+  }
+};
+
 // Runs the traversal until it is done or needs memory outside `bounds`.
-template <bool kAnyHit, class Memory, class Observer, class Bounds>
+template <bool kAnyHit, class Memory, class Observer, class Bounds, class Tests = SoftwareTests>
 inline void advance(const Memory& mem, TraversalState& s, const TraceRay& ray, Observer& obs,
-                    const Bounds& bounds) {
-  BoxRay box_ray = {ray.origin, inverse_direction(ray.dir), ray.tmin, s.t_best};
+                    const Bounds& bounds, Tests tests = Tests()) {
+  tests.begin(ray, s.t_best);
   while (s.phase != kTraversalDone) {
     if (s.phase == kAtLeaf) {
       const uint32_t ref = s.pending;
@@ -109,16 +131,13 @@ inline void advance(const Memory& mem, TraversalState& s, const TraceRay& ray, O
         const uint32_t tri_offset = offset + i * uint32_t(sizeof(TriangleRecord));
         const TriangleRecord& tri = mem.triangle(tri_offset);
         obs.triangle_tested();
-        TrianglePartial partial;
-        if (!triangle_hit_test(load_vec3(tri.v0), load_vec3(tri.v1), load_vec3(tri.v2), ray.origin,
-                               ray.dir, &partial))
-          continue;
-        const TriangleHit h = triangle_finish(partial);
+        TriangleHit h;
+        if (!tests.triangle(tri, ray, &h)) continue;
         // Strictly closer wins, so among equal distances the first one found is kept.
         if (h.t > ray.tmin && h.t < s.t_best) {
           s.t_best = h.t;
           s.hit_triangle = tri_offset;
-          box_ray.tmax = h.t;
+          tests.set_tmax(h.t);
           stop = kAnyHit;
         }
       }
@@ -140,8 +159,8 @@ inline void advance(const Memory& mem, TraversalState& s, const TraceRay& ray, O
     int go = -1;  // child to visit next, or -1 to leave this node
     if (returning_from < 0) {
       float t0 = 0.0f, t1 = 0.0f;
-      const bool hit0 = detail::child_box_hit(n, 0, box_ray, &t0);
-      const bool hit1 = detail::child_box_hit(n, 1, box_ray, &t1);
+      const bool hit0 = tests.box(n, 0, &t0);
+      const bool hit1 = tests.box(n, 1, &t1);
       if (hit0 || hit1) {
         go = (hit0 && (!hit1 || t0 <= t1)) ? 0 : 1;
         // With one child hit, the bit names the other side, as if it had gone first: the
@@ -152,7 +171,7 @@ inline void advance(const Memory& mem, TraversalState& s, const TraceRay& ray, O
     } else {
       const int first = (s.stack & 1u) ? 0 : 1;
       float t_other = 0.0f;
-      if (first == returning_from && detail::child_box_hit(n, 1 - returning_from, box_ray, &t_other))
+      if (first == returning_from && tests.box(n, 1 - returning_from, &t_other))
         go = 1 - returning_from;  // the bit keeps naming the first side, so we pop later
       else
         s.stack >>= 1;

@@ -12,6 +12,9 @@ struct BootBlock {
   uint32_t scene_image;   // guest address of the scene image (aligned to its treelet size)
   uint32_t framebuffer;   // width * height Pixels
   uint32_t counters;      // one RayCounters per thread, indexed by the global thread id
+  uint32_t path_table;    // streaming kernels: one PathRecord per path in flight
+  uint32_t path_slots;    // how many PathRecords there are
+  uint32_t pad[2];
 };
 
 constexpr const char* kBootBlockSymbol = "strata_boot";

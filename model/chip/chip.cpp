@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "firmware/kernels/boot_block.h"
+#include "firmware/kernels/streams_kernel.h"
+#include "model/memory/stream_sram.h"
 
 namespace strata::chip {
 namespace {
@@ -86,7 +88,11 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   pixels_ = in.frame.width * in.frame.height;
   const uint64_t framebuffer = align_up(frame + sizeof(kernels::FrameParams), 64);
   const uint64_t counters = align_up(framebuffer + uint64_t{pixels_} * sizeof(kernels::Pixel), 64);
-  g.end = align_up(counters + uint64_t{config_.threads()} * sizeof(kernels::RayCounters), 64);
+  const uint64_t paths = align_up(counters + uint64_t{config_.threads()} * sizeof(kernels::RayCounters), 64);
+  // Streaming kernels keep one path record per ray the stream memory can hold.
+  const uint32_t path_slots =
+      config_.design.streams ? std::min(memory::make_stream_layout(config_.stream).capacity, std::max(pixels_, 1u)) : 0u;
+  g.end = align_up(paths + uint64_t{path_slots} * sizeof(kernels::PathRecord), 64);
   if (g.end > 0xFFFFFFFFull)
     throw std::runtime_error("chip: firmware, stacks, scene image and frame need " + std::to_string(g.end) +
                              " bytes, more than the 32-bit guest address space");
@@ -96,7 +102,8 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   g.counters = static_cast<uint32_t>(counters);
   backing_.write(g.scene_image, in.scene_image, in.scene_image_bytes);
   backing_.write(g.frame, &in.frame, sizeof in.frame);
-  const kernels::BootBlock boot{g.frame, g.scene_image, g.framebuffer, g.counters};
+  g.path_table = static_cast<uint32_t>(paths);
+  const kernels::BootBlock boot{g.frame, g.scene_image, g.framebuffer, g.counters, g.path_table, path_slots, {0, 0}};
   backing_.write(*boot_symbol, &boot, sizeof boot);
 }
 

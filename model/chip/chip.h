@@ -38,7 +38,7 @@ struct FrameInputs {
 
 // Guest addresses of what the chip loaded (see Chip::Chip).
 struct GuestLayout {
-  uint32_t stacks = 0, scene_image = 0, frame = 0, framebuffer = 0, counters = 0;
+  uint32_t stacks = 0, scene_image = 0, frame = 0, framebuffer = 0, counters = 0, path_table = 0;
   uint64_t end = 0;
 };
 

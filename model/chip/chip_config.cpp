@@ -97,7 +97,6 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.l2.calendar_horizon_cycles", &l2.calendar_horizon_cycles);
   b.bind("memory.l2.access_energy_nj", &l2.access_energy_nj);
   b.bind("memory.stream.size_bytes", &stream.size_bytes);
-  b.bind("memory.stream.treelets", &stream.treelets);
   b.bind("memory.stream.ports", &stream.ports);
   b.bind("memory.stream.access_latency_cycles", &stream.access_latency_cycles);
   b.bind("memory.stream.query_latency_cycles", &stream.query_latency_cycles);

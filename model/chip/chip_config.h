@@ -65,7 +65,7 @@ struct ChipConfig {
 
   // Derives the fields that must agree (TP counts in the TM and stream configs, the
   // interconnect's L2 banks and ports), then checks everything; throws ConfigError naming the
-  // field.
+  // field. stream.treelets (one head pointer per treelet) is set from the scene by the caller.
   void finalize();
   uint32_t threads() const { return tms * tps_per_tm; }
   void bind(ConfigBinder& b);

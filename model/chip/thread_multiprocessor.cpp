@@ -192,11 +192,20 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     ++counters_.local_accesses;
     return at + 1;  // TP local memory: one cycle, no cache, no contention
   }
-  ++counters_.l1_requests;
-  uint8_t scratch[64];
-  const uint32_t bytes = std::min<uint32_t>(r.last - r.first, sizeof scratch);
-  return transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, r.first, scratch,
-                  bytes, at, true, transport::kNoTreelet, tp, nullptr);
+  // One request per cache line touched (a pipeline operand may straddle two lines); they
+  // issue together and the access completes with the last of them.
+  const uint32_t line = config_.l1d.line_bytes;
+  uint8_t scratch[256];
+  Cycle ready = at;
+  for (uint32_t a = r.first; a < r.last && error_.empty();) {
+    const uint32_t end = std::min(r.last, (a / line + 1) * line);
+    const uint32_t bytes = std::min<uint32_t>(end - a, sizeof scratch);
+    ++counters_.l1_requests;
+    ready = std::max(ready, transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, a,
+                                     scratch, bytes, at, true, transport::kNoTreelet, tp, nullptr));
+    a += bytes;
+  }
+  return ready;
 }
 
 bool ThreadMultiprocessor::step(Tp& tp) {
@@ -229,6 +238,17 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     if (hook_timed_) ready = std::max(ready, hook_ready_);
     tp.timing.complete_memory(decoded, earliest, ready);
   } else {
+    // The pipeline mode belongs to the TM. A TP configured it before its fused ops, but
+    // another TP of the TM (working on a ray of another treelet kind) may have switched it
+    // since: the TM then switches back before the op issues, and pays the switch again.
+    const tm::PipelineMode needed = decoded.op == iss::Op::kStBoxTest ? tm::PipelineMode::kBox
+                                    : (decoded.op == iss::Op::kStTriangleTest || decoded.op == iss::Op::kStTriangleDivide)
+                                        ? tm::PipelineMode::kTriangle
+                                        : tm::PipelineMode::kGeneral;
+    if (needed != tm::PipelineMode::kGeneral && xus_.mode() != needed) {
+      xus_.configure(needed, std::max(fetch_ready, tp.timing.next_issue()));
+      ++counters_.forced_reconfigurations;
+    }
     tp.timing.issue(decoded, fetch_ready, xus_);
     if (trace_.enabled()) {
       if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, global_cycle_);

@@ -56,6 +56,7 @@ struct TmCounters {
   uint64_t l1_requests = 0;
   uint64_t stream_requests = 0, stream_push_full = 0;
   uint64_t global_register_ops = 0;
+  uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode
   transport::Cycle finished_cycle = 0;
 };
 
