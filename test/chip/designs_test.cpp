@@ -1,0 +1,96 @@
+// The three designs (TRaX baseline, STRaTA streams, STRaTA streams + pipelines) rendering a
+// frame on a small chip, in both timing modes, on Cornell and on a small Sibenik view: the
+// image and the ray statistics equal the native twin's, every ray generated was completed,
+// and no ray is left in the stream memory.
+#include <cstring>
+#include <tuple>
+
+#include "chip_support.h"
+#include "model/chip/chip_report.h"
+#include "scenes/scene_spec.h"
+
+namespace strata::chip::test {
+namespace {
+
+struct Design {
+  const char* name;
+  bool streams, pipelines;
+  const char* kernel;
+};
+const Design kDesigns[] = {{"trax", false, false, "baseline"},
+                           {"streams", true, false, "streams"},
+                           {"pipelines", true, true, "streams_pipelines"}};
+
+using Param = std::tuple<int, transport::TimingMode, const char*>;
+
+class Designs : public ::testing::TestWithParam<Param> {};
+
+TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
+  const Design& d = kDesigns[std::get<0>(GetParam())];
+  const transport::TimingMode mode = std::get<1>(GetParam());
+  const std::string scene_name = std::get<2>(GetParam());
+  REQUIRE_KERNEL(d.kernel);
+  scenes::Scene scene;
+  if (scene_name == "sibenik") {
+    if (!std::filesystem::exists(STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj"))
+      GTEST_SKIP() << "../shared/scenes/sibenik is absent";
+    scene = scenes::load_scene("sibenik", STRATA_SOURCE_DIR);
+  } else {
+    scene = scenes::make_cornell({0.2, 1});
+  }
+  SmallFrame frame(scene, 16, d.kernel);
+  ChipConfig config = small_chip(mode, 2, 8);
+  config.design = {d.name, d.streams, d.pipelines};
+  config.stream.size_bytes = 512 * 1024;
+  config.stream.treelets = frame.image.header().treelet_count;
+  config.finalize();
+  Chip chip("chip", config, frame.inputs);
+  sc_core::sc_start();
+  ASSERT_TRUE(chip.finished()) << chip.error();
+
+  const sim::RenderResult twin = sim::render_native(frame.image, frame.settings);
+  const std::vector<kernels::Pixel> image = chip.framebuffer();
+  EXPECT_EQ(std::memcmp(image.data(), twin.image.data(), image.size() * sizeof(kernels::Pixel)), 0)
+      << "image differs from the native twin";
+  const kernels::RayCounters rays = chip.ray_counters();
+  EXPECT_EQ(std::memcmp(&rays, &twin.counters, sizeof rays), 0) << "ray statistics differ from the native twin";
+  EXPECT_EQ(rays.paths, 16u * 16u);
+
+  const nlohmann::json r = chip_report(chip, 1.0);
+  if (d.streams) {
+    // Conservation: every ray stored in the stream memory was popped again, none is left.
+    EXPECT_EQ(chip.stream().stored(), 0u);
+    const auto& s = r["memory"]["stream"];
+    const uint64_t stored = s["pushes"].get<uint64_t>() - s["full_rejections"].get<uint64_t>();
+    const uint64_t popped = s["pops"].get<uint64_t>() - s["empty_pops"].get<uint64_t>();
+    EXPECT_EQ(stored, popped);
+    // Every ray generated went through the stream memory at least once.
+    EXPECT_GE(stored, rays.rays[0] + rays.rays[1] + rays.rays[2]);
+  } else {
+    EXPECT_EQ(r["memory"]["stream"]["pushes"], 0);
+  }
+  if (d.pipelines) {
+    EXPECT_GT(r["xu"]["box_tests"].get<uint64_t>(), rays.node_visits);  // two children per visit, mostly
+    EXPECT_GE(r["xu"]["triangle_tests"].get<uint64_t>(), rays.triangle_tests);
+    EXPECT_GT(r["xu"]["reconfigurations"].get<uint64_t>(), 0u);
+  } else {
+    EXPECT_EQ(r["xu"]["box_tests"], 0);
+    EXPECT_EQ(r["xu"]["triangle_tests"], 0);
+  }
+}
+
+std::string param_name(const ::testing::TestParamInfo<Param>& info) {
+  return std::string(kDesigns[std::get<0>(info.param)].name) + "_" +
+         (std::get<1>(info.param) == transport::TimingMode::kPrecise ? "precise" : "lt") + "_" +
+         std::get<2>(info.param);
+}
+
+INSTANTIATE_TEST_SUITE_P(Chip, Designs,
+                         ::testing::Combine(::testing::Values(0, 1, 2),
+                                            ::testing::Values(transport::TimingMode::kLooselyTimed,
+                                                              transport::TimingMode::kPrecise),
+                                            ::testing::Values("cornell", "sibenik")),
+                         param_name);
+
+}  // namespace
+}  // namespace strata::chip::test
