@@ -4,7 +4,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <stdexcept>
+
 namespace strata::sim {
+
+// A run stopped by Ctrl-C after writing what it had; strata-sim exits with status 130.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 void add_scene_command(CLI::App& app);
 void add_render_command(CLI::App& app);

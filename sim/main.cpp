@@ -10,7 +10,6 @@
 
 // libsystemc owns main() and calls sc_main(), so the chip can be elaborated here.
 int sc_main(int argc, char** argv) {
-  setenv("SC_COPYRIGHT_MESSAGE", "DISABLE", 0);
   CLI::App app{"strata-sim: SystemC/TLM-2.0 model of the STRaTA ray-tracing architecture"};
   app.require_subcommand(1);
   strata::sim::add_scene_command(app);
@@ -21,6 +20,9 @@ int sc_main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const strata::sim::Interrupted& e) {
+    std::cerr << "strata-sim: " << e.what() << "\n";
+    return 130;
   } catch (const std::exception& e) {
     std::cerr << "strata-sim: error: " << e.what() << "\n";
     return 1;

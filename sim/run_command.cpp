@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <unistd.h>
 
 #include "model/chip/chip.h"
 #include "model/chip/chip_report.h"
@@ -15,6 +16,7 @@
 #include "sim/image_output.h"
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
+#include "sim/progress_monitor.h"
 #include "sim/resolution.h"
 #include "sim/scene_source.h"
 
@@ -30,6 +32,8 @@ struct RunOptions {
   std::string out_dir = "out/run";
   std::string firmware;  // default: the design's kernel
   std::string vcd;
+  uint64_t progress_cycles = 200000;
+  bool quiet = false;
   uint64_t vcd_window_cycles = 1000;
   bool check = false;
 };
@@ -71,13 +75,22 @@ void run_frame(RunOptions o) {
     vcd->set_time_unit(1, sc_core::SC_NS);
     chip.trace(vcd, o.vcd_window_cycles);
   }
+  ProgressMonitor progress("progress", chip, o.progress_cycles, isatty(STDERR_FILENO) != 0 && !o.quiet);
+  progress.arm();
   const auto t0 = std::chrono::steady_clock::now();
   sc_core::sc_start();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.disarm();
   if (vcd) sc_core::sc_close_vcd_trace_file(vcd);
-  if (!chip.finished()) throw std::runtime_error("simulation failed: " + chip.error());
+  const bool interrupted = progress.interrupted();
+  if (!chip.finished() && !interrupted) throw std::runtime_error("simulation failed: " + chip.error());
 
-  const nlohmann::json report = chip::chip_report(chip, wall);
+  nlohmann::json report = chip::chip_report(chip, wall);
+  if (interrupted) {
+    report["interrupted"] = true;
+    report["frame"]["cycles_simulated_before_interrupt"] = uint64_t(sc_core::sc_time_stamp().to_seconds() * config.clock_ghz * 1e9);
+    report["frame"]["pixels_done"] = chip.pixels_done();
+  }
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
   const std::vector<kernels::Pixel> image = chip.framebuffer();
@@ -88,6 +101,7 @@ void run_frame(RunOptions o) {
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
 
+  if (interrupted) throw Interrupted("interrupted: partial image and statistics written to " + dir.string());
   if (o.check) {
     const RenderResult twin = render_native(loaded.image, o.settings);
     const kernels::RayCounters chip_rays = chip.ray_counters();
@@ -119,6 +133,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--firmware", opts->firmware, "kernel ELF (default: the design's kernel)");
   cmd->add_option("--vcd", opts->vcd, "write a VCD waveform to this file");
   cmd->add_option("--vcd-window", opts->vcd_window_cycles, "VCD sampling window in cycles")->capture_default_str();
+  cmd->add_option("--progress-cycles", opts->progress_cycles, "simulated cycles between progress lines")
+      ->capture_default_str();
+  cmd->add_flag("--quiet", opts->quiet, "no progress lines");
   cmd->add_flag("--check", opts->check, "also render with the native twin and require identical results");
   cmd->add_option("--cache-dir", opts->source.cache_dir, "scene image cache");
   cmd->add_flag("--no-cache", opts->source.no_cache, "always build the scene image");

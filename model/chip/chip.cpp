@@ -133,6 +133,17 @@ transport::Cycle Chip::cycles() const {
   return c;
 }
 
+uint32_t Chip::pixels_done() const {
+  const uint32_t reg = config_.design.streams ? kernels::kPixelsDoneRegister : kernels::kPixelCounterRegister;
+  return std::min(globals_.values[reg], pixels_);
+}
+
+uint64_t Chip::instructions() const {
+  uint64_t n = 0;
+  for (const auto& tm : tms_) n += tm->counters().instructions;
+  return n;
+}
+
 std::vector<kernels::Pixel> Chip::framebuffer() const {
   std::vector<kernels::Pixel> pixels(pixels_);
   backing_.read(layout_.framebuffer, pixels.data(), pixels.size() * sizeof(kernels::Pixel));

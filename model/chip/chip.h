@@ -56,6 +56,11 @@ class Chip : public sc_core::sc_module {
   std::string error() const;
   transport::Cycle cycles() const;  // when the last TP finished
 
+  // Pixels whose every sample is finished (streaming kernels), or handed out (baseline).
+  uint32_t pixels_done() const;
+  uint32_t pixel_count() const { return pixels_; }
+  uint64_t instructions() const;
+
   std::vector<kernels::Pixel> framebuffer() const;
   kernels::RayCounters ray_counters() const;  // summed over the threads
   std::vector<kernels::RayCounters> ray_counters_per_thread() const;
