@@ -35,6 +35,7 @@ struct RunOptions {
   uint64_t progress_cycles = 200000;
   bool quiet = false;
   uint64_t vcd_window_cycles = 1000;
+  uint64_t vcd_start = 0, vcd_end = ~uint64_t{0};
   bool check = false;
 };
 
@@ -73,7 +74,7 @@ void run_frame(RunOptions o) {
     if (base.size() > 4 && base.substr(base.size() - 4) == ".vcd") base.resize(base.size() - 4);
     vcd = sc_core::sc_create_vcd_trace_file(base.c_str());
     vcd->set_time_unit(1, sc_core::SC_NS);
-    chip.trace(vcd, o.vcd_window_cycles);
+    chip.trace(vcd, memory::TraceWindow(o.vcd_window_cycles, o.vcd_start, o.vcd_end));
   }
   ProgressMonitor progress("progress", chip, o.progress_cycles, isatty(STDERR_FILENO) != 0 && !o.quiet);
   progress.arm();
@@ -133,6 +134,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--firmware", opts->firmware, "kernel ELF (default: the design's kernel)");
   cmd->add_option("--vcd", opts->vcd, "write a VCD waveform to this file");
   cmd->add_option("--vcd-window", opts->vcd_window_cycles, "VCD sampling window in cycles")->capture_default_str();
+  cmd->add_option("--vcd-start", opts->vcd_start, "first cycle the VCD records");
+  cmd->add_option("--vcd-end", opts->vcd_end, "cycle after which the VCD records nothing");
   cmd->add_option("--progress-cycles", opts->progress_cycles, "simulated cycles between progress lines")
       ->capture_default_str();
   cmd->add_flag("--quiet", opts->quiet, "no progress lines");

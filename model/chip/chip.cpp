@@ -107,7 +107,7 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   backing_.write(*boot_symbol, &boot, sizeof boot);
 }
 
-void Chip::trace(sc_core::sc_trace_file* file, transport::Cycle window) {
+void Chip::trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window) {
   for (auto& tm : tms_) tm->trace(file, window);
   for (auto& c : l1d_) c->trace(file, window);
   for (auto& c : l1i_) c->trace(file, window);

@@ -49,7 +49,7 @@ class Chip : public sc_core::sc_module {
   ~Chip() override;
 
   // Registers every module's VCD traces; call before sc_start.
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window);
 
   // After the simulation: did every TM finish, and the first error if not.
   bool finished() const;

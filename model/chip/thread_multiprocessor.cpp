@@ -59,8 +59,8 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
 
 ThreadMultiprocessor::~ThreadMultiprocessor() = default;
 
-void ThreadMultiprocessor::trace(sc_core::sc_trace_file* file, Cycle window_cycles) {
-  trace_.open(file, name(), window_cycles);
+void ThreadMultiprocessor::trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window) {
+  trace_.open(file, name(), window);
 }
 
 tm::TpStats ThreadMultiprocessor::tp_stats() const {

@@ -79,7 +79,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool finished() const { return finished_; }
 
   // VCD: pipeline mode, fused ops and instructions per window, current treelet.
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window);
 
  private:
   struct Tp;

@@ -33,7 +33,7 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
   }
 }
 
-void Dram::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
 
 uint64_t Dram::overflow_bookings() const {
   uint64_t n = 0;

@@ -50,7 +50,7 @@ class Dram : public sc_core::sc_module {
   SparseMemory& backing() { return backing_; }
   uint64_t overflow_bookings() const;
   // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead).
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

@@ -24,7 +24,7 @@ Interconnect::Interconnect(sc_core::sc_module_name name, const InterconnectConfi
   tr_conflicts_ = trace_.add_rate("conflicts_per_cycle");
 }
 
-void Interconnect::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+void Interconnect::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
 
 void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   if (port < 0 || static_cast<uint32_t>(port) >= config_.tm_ports) {

@@ -28,7 +28,7 @@ L1DataCache::L1DataCache(sc_core::sc_module_name name, const L1DataCacheConfig& 
   tr_conflicts_ = trace_.add_rate("bank_conflicts_per_cycle");
 }
 
-void L1DataCache::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+void L1DataCache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
 
 void L1DataCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   MemoryExtension* ext = gp.get_extension<MemoryExtension>();

@@ -47,7 +47,7 @@ class L1DataCache : public sc_core::sc_module {
   const StatGroup& stats() const { return stats_; }
   const CacheCore& core() const { return core_; }
   // VCD: accesses, misses and bank conflicts per cycle over each window. Before sc_start.
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

@@ -27,8 +27,8 @@ L1InstructionCache::L1InstructionCache(sc_core::sc_module_name name, const L1Ins
   tr_misses_ = trace_.add_rate("misses_per_cycle");
 }
 
-void L1InstructionCache::trace(sc_core::sc_trace_file* file, Cycle window_cycles) {
-  trace_.open(file, name(), window_cycles);
+void L1InstructionCache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) {
+  trace_.open(file, name(), window);
 }
 
 void L1InstructionCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {

@@ -37,7 +37,7 @@ class L1InstructionCache : public sc_core::sc_module {
 
   const Counters& counters() const { return counters_; }
   const StatGroup& stats() const { return stats_; }
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

@@ -30,7 +30,7 @@ L2Cache::L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMem
   tr_conflicts_ = trace_.add_rate("bank_conflicts_per_cycle");
 }
 
-void L2Cache::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
 
 void L2Cache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   MemoryExtension* ext = gp.get_extension<MemoryExtension>();

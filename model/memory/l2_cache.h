@@ -44,7 +44,7 @@ class L2Cache : public sc_core::sc_module {
   const StatGroup& stats() const { return stats_; }
   const CacheCore& core() const { return core_; }
   double energy_per_access_nj() const { return energy_per_access_; }
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

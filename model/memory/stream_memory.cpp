@@ -31,7 +31,7 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
   tr_full_ = trace_.add_rate("full_rejections_per_cycle");
 }
 
-void StreamMemory::trace(sc_core::sc_trace_file* file, Cycle window_cycles) { trace_.open(file, name(), window_cycles); }
+void StreamMemory::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
 
 void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   MemoryExtension* ext = gp.get_extension<MemoryExtension>();

@@ -51,7 +51,7 @@ class StreamMemory : public sc_core::sc_module {
   const StatGroup& stats() const { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
   // VCD: rays stored, pushes and pops per cycle, rejected pushes per cycle.
-  void trace(sc_core::sc_trace_file* file, transport::Cycle window_cycles);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

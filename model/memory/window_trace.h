@@ -15,6 +15,16 @@
 
 namespace strata::memory {
 
+// How a VCD samples: one value per window of `cycles`, and only for windows starting in
+// [start, end), so a big run's trace can be limited to the part of interest.
+struct TraceWindow {
+  TraceWindow(transport::Cycle window_cycles = 1000, transport::Cycle first = 0,
+              transport::Cycle last = ~transport::Cycle{0})
+      : cycles(window_cycles), start(first), end(last) {}
+  transport::Cycle cycles;
+  transport::Cycle start, end;
+};
+
 class WindowTrace {
  public:
   // Declare what is traced (before open); returns the index to update it by.
@@ -22,7 +32,7 @@ class WindowTrace {
   std::size_t add_level(std::string name);  // published as the last value set in a window
 
   // Registers every declared value with the trace file; call before sc_start.
-  void open(sc_core::sc_trace_file* file, const std::string& prefix, transport::Cycle window_cycles);
+  void open(sc_core::sc_trace_file* file, const std::string& prefix, const TraceWindow& window);
   bool enabled() const { return window_ != 0; }
 
   // Both take the global cycle (not the request's), so windows follow simulated time.
@@ -45,6 +55,7 @@ class WindowTrace {
   std::vector<uint64_t> accumulated_;
   std::vector<double> pending_level_;
   transport::Cycle window_ = 0;
+  transport::Cycle start_ = 0, end_ = 0;
   transport::Cycle window_start_ = 0;
 };
 

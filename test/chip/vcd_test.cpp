@@ -13,6 +13,7 @@ namespace {
 struct Vcd {
   std::map<std::string, std::string> name_of;
   std::map<std::string, int> changes;
+  std::map<std::string, uint64_t> first_change, last_change;  // timestamps after time 0
 };
 
 Vcd parse_vcd(const std::string& path) {
@@ -21,6 +22,7 @@ Vcd parse_vcd(const std::string& path) {
   std::string line;
   std::vector<std::string> scope;
   bool in_dump = false;
+  uint64_t now = 0;
   while (std::getline(in, line)) {
     std::istringstream s(line);
     std::string tok;
@@ -39,10 +41,16 @@ Vcd parse_vcd(const std::string& path) {
       v.name_of[code] = full + name;
     } else if (tok == "$enddefinitions") {
       in_dump = true;
-    } else if (in_dump && !tok.empty() && tok[0] != '#' && tok[0] != '$') {
+    } else if (in_dump && !tok.empty() && tok[0] == '#') {
+      now = std::stoull(tok.substr(1));
+    } else if (in_dump && !tok.empty() && tok[0] != '$') {
       std::string code;
       if (tok[0] == 'r' || tok[0] == 'b') s >> code; else code = tok.substr(1);
       ++v.changes[code];
+      if (now > 0) {
+        if (!v.first_change.count(code)) v.first_change[code] = now;
+        v.last_change[code] = now;
+      }
     }
   }
   return v;
@@ -54,7 +62,7 @@ TEST(ChipVcd, TraceHoldsTheTmCacheAndDramSignalsWithValueChanges) {
   Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed), frame.inputs);
   const std::string base = (std::filesystem::temp_directory_path() / ("strata-vcd-" + std::to_string(::getpid()))).string();
   sc_core::sc_trace_file* file = sc_core::sc_create_vcd_trace_file(base.c_str());
-  chip.trace(file, 500);
+  chip.trace(file, memory::TraceWindow(500));
   sc_core::sc_start();
   sc_core::sc_close_vcd_trace_file(file);
   ASSERT_TRUE(chip.finished()) << chip.error();
@@ -72,6 +80,33 @@ TEST(ChipVcd, TraceHoldsTheTmCacheAndDramSignalsWithValueChanges) {
   ASSERT_FALSE(instructions.empty());
   // Thousands of cycles in windows of 500: the instruction rate changes many times.
   EXPECT_GT(v.changes.count(instructions) ? v.changes.at(instructions) : 0, 3);
+}
+
+// --vcd-start/--vcd-end: only windows starting inside [start, end) change the trace.
+TEST(ChipVcd, TimeWindowKeepsTheTraceToTheRequestedCycles) {
+  REQUIRE_KERNEL("baseline");
+  const SmallFrame frame(scenes::make_cornell({0.2, 1}), 8);
+  Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed), frame.inputs);
+  const std::string base = (std::filesystem::temp_directory_path() / ("strata-vcdw-" + std::to_string(::getpid()))).string();
+  sc_core::sc_trace_file* file = sc_core::sc_create_vcd_trace_file(base.c_str());
+  file->set_time_unit(1, sc_core::SC_NS);
+  chip.trace(file, memory::TraceWindow(500, 20000, 30000));
+  sc_core::sc_start();
+  sc_core::sc_close_vcd_trace_file(file);
+  ASSERT_TRUE(chip.finished()) << chip.error();
+  ASSERT_GT(chip.cycles(), 40000u);  // the run is longer than the window
+  const Vcd v = parse_vcd(base + ".vcd");
+  std::filesystem::remove(base + ".vcd");
+  int traced = 0;
+  for (const auto& [code, name] : v.name_of) {
+    if (name.find("tm_0.instructions") == std::string::npos) continue;
+    ++traced;
+    ASSERT_TRUE(v.first_change.count(code)) << "no change inside the window";
+    // A window is published when the first access after it arrives: within a window or two.
+    EXPECT_GE(v.first_change.at(code), 20000u);
+    EXPECT_LE(v.last_change.at(code), 32000u);
+  }
+  EXPECT_EQ(traced, 1);
 }
 
 }  // namespace
