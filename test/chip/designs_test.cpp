@@ -38,7 +38,7 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
   } else {
     scene = scenes::make_cornell({0.2, 1});
   }
-  SmallFrame frame(scene, 16, d.kernel);
+  SmallFrame frame(scene, 32, d.kernel);
   ChipConfig config = small_chip(mode, 2, 8);
   config.design = {d.name, d.streams, d.pipelines};
   config.stream.size_bytes = 512 * 1024;
@@ -54,7 +54,7 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
       << "image differs from the native twin";
   const kernels::RayCounters rays = chip.ray_counters();
   EXPECT_EQ(std::memcmp(&rays, &twin.counters, sizeof rays), 0) << "ray statistics differ from the native twin";
-  EXPECT_EQ(rays.paths, 16u * 16u);
+  EXPECT_EQ(rays.paths, 32u * 32u);
 
   const nlohmann::json r = chip_report(chip, 1.0);
   if (d.streams) {
