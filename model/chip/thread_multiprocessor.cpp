@@ -4,6 +4,7 @@
 #include <cstring>
 #include <utility>
 
+#include "model/chip/tp_schedule.h"
 #include "model/iss/hart_impl.h"
 
 namespace strata::chip {
@@ -107,30 +108,26 @@ void ThreadMultiprocessor::run() {
   // The TP with the earliest next issue cycle goes next (ties: the lower TP). A linear scan
   // of at most 64 cycles is cheaper than a heap here, and finding the runner-up in the same
   // pass lets the chosen TP keep issuing until it passes the runner-up, one scan per burst.
-  // Keys are (cycle << 6) | tp, so one integer min finds the earliest TP and breaks ties by
-  // index, without branches the host could mispredict.
-  constexpr Cycle kDone = ~Cycle{0};
-  std::vector<Cycle> key(tps_.size());
-  for (uint32_t i = 0; i < key.size(); ++i) key[i] = i;
+  // The earliest TP issues, and keeps issuing until it passes the runner-up.
+  TpSchedule schedule(static_cast<uint32_t>(tps_.size()));
   global_cycle_ = clock_.now();
-  for (;;) {
-    Cycle best = kDone, second = kDone;
-    for (const Cycle k : key) {
-      second = std::min(second, std::max(best, k));
-      best = std::min(best, k);
-    }
-    if (best == kDone || !error_.empty()) break;
+  while (schedule.top() != TpSchedule::kDone && error_.empty()) {
+    const uint64_t best = schedule.top();
+    const uint64_t second = schedule.runner_up();
     const uint32_t index = static_cast<uint32_t>(best & 63u);
-    const Cycle until = second == kDone ? kDone : second >> 6;
+    const Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
     Tp& tp = *tps_[index];
-    for (Cycle t = best >> 6; t <= until; t = tp.timing.next_issue()) {
+    for (Cycle t = best >> 6;; t = tp.timing.next_issue()) {
       sync_to(t);
       if (!step(tp)) {
         counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
-        key[index] = kDone;
+        schedule.done(index);
         break;
       }
-      key[index] = (tp.timing.next_issue() << 6) | index;
+      if (tp.timing.next_issue() > until) {
+        schedule.set(index, tp.timing.next_issue());
+        break;
+      }
     }
   }
   finished_ = error_.empty();
