@@ -21,17 +21,8 @@ AccessResult MemoryInitiator::access(AccessClass access, uint64_t addr, void* da
   if (config_.mode == TimingMode::kPrecise) keeper_.sync();
 
   PooledPayload gp(pool_);
-  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
-  gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-  gp->set_address(addr);
-  gp->set_data_ptr(static_cast<unsigned char*>(data));
-  gp->set_data_length(bytes);
-  gp->set_streaming_width(bytes);
-  MemoryExtension& ext = gp.ext();
-  ext.initiator_id = config_.initiator_id;
-  ext.tm_id = config_.tm_id;
-  ext.access = access;
-  ext.treelet = treelet;
+  prepare_access(gp, access, addr, data, bytes, config_.initiator_id, config_.tm_id, treelet);
+  const MemoryExtension& ext = gp.ext();
 
   sc_core::sc_time delay = keeper_.local_time();
   AccessResult r;

@@ -50,4 +50,25 @@ class PooledPayload {
   tlm::tlm_generic_payload* gp_;
 };
 
+// Sets a pooled payload up for one memory access of the given class: command, address, data,
+// and the extension's request fields (its response fields are cleared).
+inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr, void* data, uint32_t bytes,
+                           uint32_t initiator_id, uint32_t tm_id, uint32_t treelet = kNoTreelet,
+                           bool timing_only = false) {
+  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
+  gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  gp->set_address(addr);
+  gp->set_data_ptr(static_cast<unsigned char*>(data));
+  gp->set_data_length(bytes);
+  gp->set_streaming_width(bytes);
+  gp->set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  MemoryExtension& ext = gp.ext();
+  ext.initiator_id = initiator_id;
+  ext.tm_id = tm_id;
+  ext.access = access;
+  ext.treelet = treelet;
+  ext.timing_only = timing_only;
+  ext.reset_response();
+}
+
 }  // namespace strata::transport

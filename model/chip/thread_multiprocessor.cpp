@@ -138,20 +138,8 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                                      MemoryExtension* result) {
   transport::PooledPayload gp(pool_);
-  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
-  gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-  gp->set_address(addr);
-  gp->set_data_ptr(static_cast<unsigned char*>(data));
-  gp->set_data_length(bytes);
-  gp->set_streaming_width(bytes);
-  gp->set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  MemoryExtension& ext = gp.ext();
-  ext.initiator_id = tp.thread_id;
-  ext.tm_id = tm_id_;
-  ext.access = access;
-  ext.timing_only = timing_only;
-  ext.treelet = treelet;
-  ext.reset_response();
+  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only);
+  const MemoryExtension& ext = gp.ext();
   sc_core::sc_time delay = clock_.delay_until(at);
   port->b_transport(*gp, delay);
   if (gp->get_response_status() != tlm::TLM_OK_RESPONSE) {

@@ -67,18 +67,8 @@ struct RawInitiator : sc_core::sc_module {
   Sent send(AccessClass access, uint64_t addr, void* data, uint32_t bytes, Cycle at,
             uint32_t treelet = transport::kNoTreelet, bool timing_only = false) {
     transport::PooledPayload gp(pool);
-    const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
-    gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-    gp->set_address(addr);
-    gp->set_data_ptr(static_cast<unsigned char*>(data));
-    gp->set_data_length(bytes);
-    gp->set_streaming_width(bytes);
-    MemoryExtension& ext = gp.ext();
-    ext.initiator_id = initiator_id;
-    ext.tm_id = tm_id;
-    ext.access = access;
-    ext.treelet = treelet;
-    ext.timing_only = timing_only;
+    transport::prepare_access(gp, access, addr, data, bytes, initiator_id, tm_id, treelet, timing_only);
+    const MemoryExtension& ext = gp.ext();
     sc_core::sc_time delay = clock.delay_until(at);
     socket->b_transport(*gp, delay);
     return Sent{gp->get_response_status(), clock.request_cycle(delay), ext.served_by, ext.stream_status, ext.result};
