@@ -53,6 +53,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("global_register_latency_cycles", &global_register_latency_cycles);
   b.bind_enum("timing.mode", &timing.mode, {"lt", "precise"});
   b.bind("timing.quantum_cycles", &timing.quantum_cycles);
+  b.bind("timing.tp_slack_cycles", &timing.tp_slack_cycles);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
@@ -136,6 +137,7 @@ void ChipConfig::finalize() {
   require(tp_stack_bytes >= 256 && tp_stack_bytes % 16 == 0,
           "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
   require(timing.quantum_cycles >= 1, "timing.quantum_cycles: must be at least 1");
+  require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");
   tm.tps = tps_per_tm;
   stream.tms = tms;
   stream.threads = threads();

@@ -25,6 +25,10 @@ struct DesignConfig {
 struct TimingConfig {
   transport::TimingMode mode = transport::TimingMode::kLooselyTimed;
   uint32_t quantum_cycles = 1000;  // LT: how far a TM may run ahead of global time
+  // LT: how far one TP may run ahead of the other TPs of its TM before the TM switches to the
+  // earliest one. Larger bursts simulate faster; the XU and memory calendars still see every
+  // request at its own cycle.
+  uint32_t tp_slack_cycles = 32;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

@@ -41,6 +41,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       tm_id_(tm_id),
       clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
       op_table_(env.config->tm),
+      burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
       xus_(env.config->tm) {
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
@@ -108,14 +109,16 @@ void ThreadMultiprocessor::run() {
   // The TP with the earliest next issue cycle goes next (ties: the lower TP). A linear scan
   // of at most 64 cycles is cheaper than a heap here, and finding the runner-up in the same
   // pass lets the chosen TP keep issuing until it passes the runner-up, one scan per burst.
-  // The earliest TP issues, and keeps issuing until it passes the runner-up.
+  // The earliest TP issues, and keeps issuing until it passes the runner-up (loosely timed:
+  // by up to timing.tp_slack_cycles, which the XU and memory calendars absorb, since they
+  // accept requests out of time order; precise: not at all).
   TpSchedule schedule(static_cast<uint32_t>(tps_.size()));
   global_cycle_ = clock_.now();
   while (schedule.top() != TpSchedule::kDone && error_.empty()) {
     const uint64_t best = schedule.top();
     const uint64_t second = schedule.runner_up();
     const uint32_t index = static_cast<uint32_t>(best & 63u);
-    const Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
+    const Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : (second >> 6) + burst_slack_;
     Tp& tp = *tps_[index];
     for (Cycle t = best >> 6;; t = tp.timing.next_issue()) {
       sync_to(t);

@@ -103,6 +103,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   transport::Clock clock_;
   transport::PayloadPool pool_;
   tm::OpTimingTable op_table_;
+  transport::Cycle burst_slack_;
   tm::XuCrossbar xus_;
   std::vector<std::unique_ptr<Tp>> tps_;
   TmCounters counters_;
