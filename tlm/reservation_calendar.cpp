@@ -79,13 +79,6 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
   return b;
 }
 
-uint32_t ReservationCalendar::used(Cycle c) const {
-  if (c < base_ || c >= base_ + horizon_) return 0;
-  const uint32_t slot = static_cast<uint32_t>(c & mask_);
-  if (capacity_ > 1) return used_[slot];
-  return static_cast<uint32_t>((full_[slot >> 6] >> (slot & 63)) & 1);
-}
-
 void ReservationCalendar::clear_range(Cycle from, Cycle count) {
   uint32_t slot = static_cast<uint32_t>(from & mask_);
   while (count > 0) {

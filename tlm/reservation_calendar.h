@@ -43,7 +43,13 @@ class ReservationCalendar {
   // Global time has reached `now`: no request can be made for an earlier cycle any more.
   void retire_before(Cycle now);
 
-  uint32_t used(Cycle c) const;  // units booked in cycle c (inside the window)
+  // Units booked in cycle c (0 outside the window). Inline: the XU crossbar asks per cycle.
+  uint32_t used(Cycle c) const {
+    if (c < base_ || c >= base_ + horizon_) return 0;
+    const uint32_t slot = static_cast<uint32_t>(c & mask_);
+    if (capacity_ > 1) return used_[slot];
+    return static_cast<uint32_t>((full_[slot >> 6] >> (slot & 63)) & 1);
+  }
   Cycle base() const { return base_; }
   uint32_t horizon() const { return horizon_; }
   uint32_t units_per_cycle() const { return capacity_; }
