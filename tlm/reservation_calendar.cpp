@@ -14,11 +14,14 @@ uint32_t round_up_pow2(uint32_t v) {
 }  // namespace
 
 ReservationCalendar::ReservationCalendar(uint32_t units_per_cycle, uint32_t horizon_cycles)
-    : capacity_(units_per_cycle), horizon_(round_up_pow2(horizon_cycles)), mask_(horizon_ - 1) {
+    : capacity_(units_per_cycle), horizon_(round_up_pow2(horizon_cycles)), mask_(2 * horizon_ - 1) {
   if (capacity_ == 0) throw std::invalid_argument("ReservationCalendar: units_per_cycle must be > 0");
   if (horizon_cycles > (1u << 30)) throw std::invalid_argument("ReservationCalendar: horizon too large");
-  full_.assign(horizon_ / 64, 0);
-  if (capacity_ > 1) used_.assign(horizon_, 0);
+  // Twice the window's slots: a window not aligned to 64 cycles spans one block more than
+  // it holds, and its first and last blocks must not share a word.
+  full_.assign(2 * horizon_ / 64, 0);
+  block_.assign(2 * horizon_ / 64, kNone);  // no block: every slot reads as empty
+  if (capacity_ > 1) used_.assign(2 * horizon_, 0);
 }
 
 Cycle ReservationCalendar::first_free(Cycle from) const {
@@ -28,7 +31,7 @@ Cycle ReservationCalendar::first_free(Cycle from) const {
     const uint32_t slot = static_cast<uint32_t>(c & mask_);
     const uint32_t bit = slot & 63;
     const uint64_t below = bit == 0 ? 0 : ((uint64_t{1} << bit) - 1);
-    const uint64_t word = full_[slot >> 6] | below;
+    const uint64_t word = full_word(c) | below;
     if (word != ~uint64_t{0}) {
       const Cycle found = c + static_cast<Cycle>(__builtin_ctzll(~word) - bit);
       return found < end ? found : kNone;
@@ -38,7 +41,16 @@ Cycle ReservationCalendar::first_free(Cycle from) const {
   return kNone;
 }
 
-void ReservationCalendar::mark_full(uint32_t slot) { full_[slot >> 6] |= uint64_t{1} << (slot & 63); }
+uint32_t ReservationCalendar::claim(Cycle c) {
+  const uint32_t slot = static_cast<uint32_t>(c & mask_);
+  const uint32_t w = slot >> 6;
+  if (block_[w] != (c >> 6)) {
+    block_[w] = c >> 6;
+    full_[w] = 0;
+    if (capacity_ > 1) std::fill_n(used_.begin() + (w << 6), 64, 0u);
+  }
+  return slot;
+}
 
 Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
   if (units == 0) units = 1;
@@ -58,14 +70,15 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
       ++overflows_;
       break;
     }
-    const uint32_t slot = static_cast<uint32_t>(f & mask_);
+    const uint32_t slot = claim(f);
+    const uint64_t bit = uint64_t{1} << (slot & 63);
     uint32_t take = 1;
     if (capacity_ == 1) {
-      mark_full(slot);
+      full_[slot >> 6] |= bit;
     } else {
       take = std::min(capacity_ - used_[slot], units);
       used_[slot] += take;
-      if (used_[slot] == capacity_) mark_full(slot);
+      if (used_[slot] == capacity_) full_[slot >> 6] |= bit;
     }
     units -= take;
     if (!started) {
@@ -79,25 +92,12 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
   return b;
 }
 
-void ReservationCalendar::clear_range(Cycle from, Cycle count) {
-  uint32_t slot = static_cast<uint32_t>(from & mask_);
-  while (count > 0) {
-    const uint32_t bit = slot & 63;
-    const uint32_t n = static_cast<uint32_t>(std::min<Cycle>(64 - bit, count));
-    const uint64_t bits = n == 64 ? ~uint64_t{0} : (((uint64_t{1} << n) - 1) << bit);
-    full_[slot >> 6] &= ~bits;
-    if (capacity_ > 1) std::fill_n(used_.begin() + slot, n, 0u);
-    slot = (slot + n) & mask_;
-    count -= n;
-  }
-}
-
 void ReservationCalendar::expose(Cycle from, Cycle to) {
   const Cycle lo = std::max(from, overflow_head_);
   const Cycle hi = std::min(to, overflow_tail_);
   for (Cycle c = lo; c < hi; ++c) {
-    const uint32_t slot = static_cast<uint32_t>(c & mask_);
-    mark_full(slot);
+    const uint32_t slot = claim(c);
+    full_[slot >> 6] |= uint64_t{1} << (slot & 63);
     if (capacity_ > 1) used_[slot] = capacity_;
   }
   // The whole tail is inside the window now; later overflows start a new one.
@@ -107,15 +107,10 @@ void ReservationCalendar::expose(Cycle from, Cycle to) {
 void ReservationCalendar::retire_before(Cycle now) {
   if (now <= base_) return;
   const Cycle old_end = base_ + horizon_;
-  if (now - base_ >= horizon_) {
-    clear_range(0, horizon_);
-    base_ = now;
-    expose(base_, base_ + horizon_);
-  } else {
-    clear_range(base_, now - base_);
-    base_ = now;
-    expose(old_end, base_ + horizon_);
-  }
+  // Nothing to clear: the retired slots' blocks go stale by themselves (claim()).
+  const Cycle new_end = now + horizon_;
+  base_ = now;
+  expose(std::max(old_end, now), new_end);
 }
 
 }  // namespace strata::transport

@@ -8,8 +8,11 @@
 // requested one that still have room, wherever later bookings already sit.
 //
 // Cost: the search skips 64 full cycles per word (count-trailing-zeros), so a booking costs
-// O(1 + backlog/64); retiring the past clears whole words. Nothing allocates after
-// construction. Slots are recycled as global time passes (retire_before).
+// O(1 + backlog/64). Retiring the past costs nothing: each 64-cycle block of slots is tagged
+// with the absolute block it holds, and a block whose tag is stale reads as empty and is
+// cleared only when something is booked in it again. So a calendar that sees no requests
+// (an idle unit, most of the time) costs no work per simulated cycle. Nothing allocates
+// after construction.
 //
 // Bookings that do not fit in the window are not lost: they are served in arrival order
 // after everything else in a tail beyond the window, whose extent counts as busy once the
@@ -47,6 +50,7 @@ class ReservationCalendar {
   uint32_t used(Cycle c) const {
     if (c < base_ || c >= base_ + horizon_) return 0;
     const uint32_t slot = static_cast<uint32_t>(c & mask_);
+    if (block_[slot >> 6] != (c >> 6)) return 0;
     if (capacity_ > 1) return used_[slot];
     return static_cast<uint32_t>((full_[slot >> 6] >> (slot & 63)) & 1);
   }
@@ -59,14 +63,20 @@ class ReservationCalendar {
  private:
   static constexpr Cycle kNone = ~Cycle{0};
   Cycle first_free(Cycle from) const;
-  void mark_full(uint32_t slot);
-  void clear_range(Cycle from, Cycle count);
+  // The full-bits word of c's block (0 if the block holds an older one).
+  uint64_t full_word(Cycle c) const {
+    const uint32_t w = static_cast<uint32_t>(c & mask_) >> 6;
+    return block_[w] == (c >> 6) ? full_[w] : 0;
+  }
+  // c's slot, after making its block hold c's block (clearing an older one's contents).
+  uint32_t claim(Cycle c);
   void expose(Cycle from, Cycle to);  // cycles entering the window: busy if in the overflow tail
 
   uint32_t capacity_;
   uint32_t horizon_;
-  uint32_t mask_;
-  std::vector<uint64_t> full_;  // bit per slot: no capacity left
+  uint32_t mask_;  // slot of cycle c: c & mask_ (the ring holds 2 * horizon_ slots)
+  std::vector<uint64_t> full_;   // bit per slot: no capacity left
+  std::vector<Cycle> block_;     // per 64-slot word: the absolute block (cycle / 64) it holds
   std::vector<uint32_t> used_;  // units per slot; empty when capacity_ == 1 (the bit says it)
   Cycle base_ = 0;
   Cycle latest_end_ = 0;

@@ -70,3 +70,35 @@ TEST(ReservationCalendar, BookingsBeyondTheHorizonAreKeptAndStayBusy) {
 }
 
 }  // namespace
+
+namespace {
+
+using strata::transport::ReservationCalendar;
+
+// A window that does not start on a 64-cycle boundary spans one block more than it holds:
+// bookings at its far end must not evict those at its near end.
+TEST(ReservationCalendar, UnalignedWindowKeepsBothEndsApart) {
+  ReservationCalendar cal(4, 128);
+  cal.retire_before(10);
+  for (uint64_t c = 10; c < 64; ++c) EXPECT_EQ(cal.book(c, 4).first, c);  // fill 10..63
+  EXPECT_EQ(cal.book(130, 2).first, 130u);  // the far end of [10, 138)
+  for (uint64_t c = 10; c < 64; ++c) EXPECT_EQ(cal.used(c), 4u) << "cycle " << c;
+  EXPECT_EQ(cal.book(10, 1).first, 64u);  // 10..63 are still full
+  EXPECT_EQ(cal.used(130), 2u);
+}
+
+// Retiring costs nothing: old contents vanish when their slots are reused, not before, and
+// stale contents never show through.
+TEST(ReservationCalendar, StaleSlotsReadAsEmptyAfterTheWindowMoves) {
+  ReservationCalendar cal(3, 64);
+  for (uint64_t c = 0; c < 64; ++c) cal.book(c, 3);
+  cal.retire_before(100);  // cycles 100..163 reuse the slots of 36..63 and 0..35
+  for (uint64_t c = 100; c < 164; ++c) EXPECT_EQ(cal.used(c), 0u) << "cycle " << c;
+  EXPECT_EQ(cal.book(100, 3).first, 100u);
+  EXPECT_EQ(cal.book(127, 1).first, 127u);
+  EXPECT_EQ(cal.used(128), 0u);
+  EXPECT_EQ(cal.used(127), 1u);
+  EXPECT_EQ(cal.used(99), 0u);  // before the window
+}
+
+}  // namespace
