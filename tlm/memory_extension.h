@@ -37,6 +37,9 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
   AccessClass access = AccessClass::kDataLoad;
   // The level above already moved the data through the backing store; only book time.
   bool timing_only = false;
+  // Sampled timing, fast-forward: do the access's function (a stream push or pop) but book no
+  // time and count nothing, so the statistics hold the detailed windows only.
+  bool functional = false;
   uint32_t treelet = kNoTreelet;
   // Response.
   StreamStatus stream_status = StreamStatus::kOk;

@@ -3,7 +3,11 @@
 namespace strata::transport {
 
 const char* to_string(TimingMode mode) {
-  return mode == TimingMode::kPrecise ? "precise" : "loosely-timed";
+  switch (mode) {
+    case TimingMode::kPrecise: return "precise";
+    case TimingMode::kSampled: return "sampled";
+    default: return "loosely-timed";
+  }
 }
 
 namespace {
@@ -36,13 +40,13 @@ AccessResult MemoryInitiator::access(AccessClass access, uint64_t addr, void* da
 
   // Blocking access: this thread's time moves to the completion.
   keeper_.set(delay);
-  if (config_.mode == TimingMode::kLooselyTimed && keeper_.need_sync()) keeper_.sync();
+  if (config_.mode != TimingMode::kPrecise && keeper_.need_sync()) keeper_.sync();
   return r;
 }
 
 void MemoryInitiator::advance(Cycle cycles) {
   keeper_.inc(clock_.duration(cycles));
-  if (config_.mode == TimingMode::kLooselyTimed && keeper_.need_sync()) keeper_.sync();
+  if (config_.mode != TimingMode::kPrecise && keeper_.need_sync()) keeper_.sync();
 }
 
 AccessResult MemoryInitiator::load(uint64_t addr, void* data, uint32_t bytes) {

@@ -8,7 +8,10 @@
 //   kPrecise:      the thread waits until global time reaches its local time before every
 //                  access (a quantum of one cycle), so requests reach the targets in time
 //                  order. This is the accuracy reference.
-// Targets are the same in both modes: they compute completion from request time + calendars.
+//   kSampled:      the chip's TMs alternate short loosely-timed windows with functional
+//                  fast-forward (docs/sampled-timing.md); an initiator here treats it as
+//                  loosely timed.
+// Targets are the same in every mode: they compute completion from request time + calendars.
 #pragma once
 
 #include "tlm/clock.h"
@@ -24,7 +27,7 @@
 
 namespace strata::transport {
 
-enum class TimingMode : uint8_t { kLooselyTimed, kPrecise };
+enum class TimingMode : uint8_t { kLooselyTimed, kPrecise, kSampled };
 const char* to_string(TimingMode mode);
 
 struct InitiatorConfig {

@@ -51,9 +51,12 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("tps_per_tm", &tps_per_tm);
   b.bind("tp_stack_bytes", &tp_stack_bytes);
   b.bind("global_register_latency_cycles", &global_register_latency_cycles);
-  b.bind_enum("timing.mode", &timing.mode, {"lt", "precise"});
+  b.bind_enum("timing.mode", &timing.mode, {"lt", "precise", "sampled"});
   b.bind("timing.quantum_cycles", &timing.quantum_cycles);
   b.bind("timing.tp_slack_cycles", &timing.tp_slack_cycles);
+  b.bind("timing.sample_period_cycles", &timing.sample_period_cycles);
+  b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
+  b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
@@ -138,6 +141,16 @@ void ChipConfig::finalize() {
           "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
   require(timing.quantum_cycles >= 1, "timing.quantum_cycles: must be at least 1");
   require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");
+  if (timing.mode == transport::TimingMode::kSampled) {
+    const auto& t = timing;
+    require(t.sample_warmup_cycles + t.quantum_cycles <= t.sample_detail_cycles,
+            "timing.sample_detail_cycles: must hold the warm-up plus one quantum (" +
+                std::to_string(t.sample_warmup_cycles) + " + " + std::to_string(t.quantum_cycles) + "), got " +
+                std::to_string(t.sample_detail_cycles));
+    require(t.sample_detail_cycles < t.sample_period_cycles,
+            "timing.sample_period_cycles: must be longer than timing.sample_detail_cycles (" +
+                std::to_string(t.sample_detail_cycles) + "), got " + std::to_string(t.sample_period_cycles));
+  }
   tm.tps = tps_per_tm;
   stream.tms = tms;
   stream.threads = threads();

@@ -29,6 +29,13 @@ struct TimingConfig {
   // earliest one. Larger bursts simulate faster; the XU and memory calendars still see every
   // request at its own cycle.
   uint32_t tp_slack_cycles = 32;
+  // Sampled: every sample_period_cycles, sample_detail_cycles run loosely timed; the rest of
+  // the period fast-forwards functionally at each TM's measured cycles per instruction. The
+  // first sample_warmup_cycles of a detailed window refill the scoreboards and calendars
+  // and are not measured. docs/sampled-timing.md.
+  uint32_t sample_period_cycles = 100000;
+  uint32_t sample_detail_cycles = 10000;
+  uint32_t sample_warmup_cycles = 2000;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

@@ -1,6 +1,8 @@
 #include "model/chip/chip_report.h"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace strata::chip {
 namespace {
@@ -22,6 +24,31 @@ nlohmann::json rays_json(const kernels::RayCounters& c) {
   return j;
 }
 
+// Sampled timing measures the memory system, the XUs and the stalls in its detailed windows
+// only; their counters are extrapolated to the whole frame by instructions retired over
+// instructions timed (1 in the other modes). Occupancies, capacities and rates stay as they are.
+class Extrapolation {
+ public:
+  explicit Extrapolation(double scale) : scale_(scale) {}
+  double scale() const { return scale_; }
+  uint64_t operator()(uint64_t v) const { return static_cast<uint64_t>(std::llround(double(v) * scale_)); }
+  double operator()(double v) const { return v * scale_; }
+  nlohmann::json json(nlohmann::json j) const {
+    if (scale_ == 1.0) return j;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& key = it.key();
+      if (key == "capacity" || key == "stored" || key == "peak_gb_per_s" || key == "bandwidth_gb_per_s") continue;
+      if (it->is_object()) *it = json(*it);
+      else if (it->is_number_unsigned()) *it = (*this)(it->get<uint64_t>());
+      else if (it->is_number()) *it = (*this)(it->get<double>());
+    }
+    return j;
+  }
+
+ private:
+  double scale_;
+};
+
 struct CacheSums {
   uint64_t accesses = 0, hits = 0, misses = 0, merged = 0, conflicts = 0, bytes = 0;
   double energy_nj = 0;
@@ -41,6 +68,23 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   const kernels::RayCounters rays = chip.ray_counters();
   j["rays"] = rays_json(rays);
 
+  uint64_t retired = 0, timed = 0;
+  for (const auto& t : chip.tms()) {
+    retired += t->counters().instructions;
+    timed += t->counters().detailed_instructions;
+  }
+  const bool sampled = cfg.timing.mode == transport::TimingMode::kSampled;
+  const Extrapolation x(sampled && timed > 0 ? double(retired) / double(timed) : 1.0);
+  if (sampled)
+    j["sampling"] = {{"period_cycles", cfg.timing.sample_period_cycles},
+                     {"detail_cycles", cfg.timing.sample_detail_cycles},
+                     {"warmup_cycles", cfg.timing.sample_warmup_cycles},
+                     {"timed_instructions", timed},
+                     {"fast_forward_instructions", retired - timed},
+                     {"extrapolation_factor", x.scale()},
+                     {"extrapolated", "memory, XU, stall, fetch-request and energy counters (not rays, "
+                                      "instructions, register-file accesses or cycles)"}};
+
   // Instructions, register file and XUs, summed over the TMs.
   tm::TpStats tp;
   iss::Counters mix;
@@ -56,25 +100,31 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
     tp.fp_reads += s.fp_reads;
     tp.fp_writes += s.fp_writes;
     mix += t->iss_counters();
-    const tm::XuStats x = t->xus().stats(cycles);
+    const tm::XuStats u = t->xus().stats(cycles);
     for (unsigned m = 0; m < tm::kModeCount; ++m)
-      for (unsigned c = 0; c < tm::kXuClassCount; ++c) xu.by_mode[m][c] += x.by_mode[m][c];
-    xu.box_tests += x.box_tests;
-    xu.triangle_tests += x.triangle_tests;
-    xu.triangle_divides += x.triangle_divides;
-    xu.reconfigurations += x.reconfigurations;
-    for (unsigned m = 0; m < tm::kModeCount; ++m) xu.mode_cycles[m] += x.mode_cycles[m];
-    local += t->counters().local_accesses;
-    icache_requests += t->counters().icache_fetch_requests;
+      for (unsigned c = 0; c < tm::kXuClassCount; ++c) {
+        xu.by_mode[m][c].ops += x(u.by_mode[m][c].ops);
+        xu.by_mode[m][c].busy_unit_cycles += x(u.by_mode[m][c].busy_unit_cycles);
+      }
+    xu.box_tests += x(u.box_tests);
+    xu.triangle_tests += x(u.triangle_tests);
+    xu.triangle_divides += x(u.triangle_divides);
+    xu.reconfigurations += x(u.reconfigurations);
+    for (unsigned m = 0; m < tm::kModeCount; ++m) xu.mode_cycles[m] += u.mode_cycles[m];
+    local += x(t->counters().local_accesses);
+    icache_requests += x(t->counters().icache_fetch_requests);
   }
+  for (uint64_t& s : tp.stall_cycles) s = x(s);
   nlohmann::json& ins = j["instructions"];
   ins["retired"] = mix.retired;
   for (unsigned c = 0; c < iss::kClassCount; ++c)
     if (mix.by_class[c]) ins["mix"][iss::class_name(iss::InstrClass(c))] = mix.by_class[c];
-  ins["fetched"] = tp.fetches;
+  // Every retired instruction was fetched once and read its registers once; the ISS counts
+  // both exactly in every timing mode.
+  ins["fetched"] = mix.retired;
   ins["icache_line_requests"] = icache_requests;
-  ins["register_file"] = {{"int_reads", tp.int_reads}, {"int_writes", tp.int_writes},
-                          {"fp_reads", tp.fp_reads}, {"fp_writes", tp.fp_writes}};
+  ins["register_file"] = {{"int_reads", mix.int_reads}, {"int_writes", mix.int_writes},
+                          {"fp_reads", mix.fp_reads}, {"fp_writes", mix.fp_writes}};
   for (unsigned s = 0; s < tm::kStallCauseCount; ++s)
     ins["stall_cycles"][tm::stall_cause_name(tm::StallCause(s))] = tp.stall_cycles[s];
   ins["tp_local_memory_accesses"] = local;
@@ -104,21 +154,21 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   CacheSums l1d, l1i;
   for (const auto& c : chip.l1d()) {
     const auto& k = c->counters();
-    l1d.accesses += k.accesses;
-    l1d.hits += k.hits;
-    l1d.misses += k.misses;
-    l1d.merged += k.merged_misses;
-    l1d.conflicts += k.bank_conflicts;
-    l1d.bytes += k.bytes_read + k.bytes_written;
-    l1d.energy_nj += k.energy_nj;
+    l1d.accesses += x(k.accesses);
+    l1d.hits += x(k.hits);
+    l1d.misses += x(k.misses);
+    l1d.merged += x(k.merged_misses);
+    l1d.conflicts += x(k.bank_conflicts);
+    l1d.bytes += x(k.bytes_read + k.bytes_written);
+    l1d.energy_nj += x(k.energy_nj);
   }
   for (const auto& c : chip.l1i()) {
     const auto& k = c->counters();
-    l1i.accesses += k.accesses;
-    l1i.hits += k.hits;
-    l1i.misses += k.misses;
-    l1i.conflicts += k.bank_conflicts;
-    l1i.energy_nj += k.energy_nj;
+    l1i.accesses += x(k.accesses);
+    l1i.hits += x(k.hits);
+    l1i.misses += x(k.misses);
+    l1i.conflicts += x(k.bank_conflicts);
+    l1i.energy_nj += x(k.energy_nj);
   }
   nlohmann::json& mj = j["memory"];
   mj["l1d"] = {{"accesses", l1d.accesses}, {"hits", l1d.hits}, {"misses", l1d.misses},
@@ -126,12 +176,12 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
                {"hit_rate", ratio(double(l1d.hits), double(l1d.hits + l1d.misses))}, {"energy_nj", l1d.energy_nj}};
   mj["l1i"] = {{"accesses", l1i.accesses}, {"hits", l1i.hits}, {"misses", l1i.misses},
                {"bank_conflicts", l1i.conflicts}, {"energy_nj", l1i.energy_nj}};
-  mj["l2"] = chip.l2().stats().to_json();
-  mj["stream"] = chip.stream().stats().to_json();
-  mj["interconnect"] = chip.interconnect().stats().to_json();
+  mj["l2"] = x.json(chip.l2().stats().to_json());
+  mj["stream"] = x.json(chip.stream().stats().to_json());
+  mj["interconnect"] = x.json(chip.interconnect().stats().to_json());
   const auto& dram = chip.dram().counters();
-  const uint64_t dram_bytes = dram.bytes_read + dram.bytes_written;
-  mj["dram"] = chip.dram().stats().to_json();
+  const uint64_t dram_bytes = x(dram.bytes_read + dram.bytes_written);
+  mj["dram"] = x.json(chip.dram().stats().to_json());
   mj["dram"]["bytes"] = dram_bytes;
   mj["dram"]["bandwidth_gb_per_s"] = ratio(double(dram_bytes), seconds) * 1e-9;
   mj["dram"]["peak_gb_per_s"] = double(cfg.dram.bytes_per_cycle) * cfg.clock_ghz;
@@ -142,17 +192,18 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
                                                e.fp_inv_sqrt_nj, e.int_mul_nj, e.int_div_nj};
   double xu_nj = double(xu.box_tests) * e.box_test_nj + double(xu.triangle_tests) * e.triangle_test_nj;
   for (unsigned c = 0; c < tm::kXuClassCount; ++c) xu_nj += double(xu.total(tm::XuClass(c)).ops) * per_class[c];
-  const double fetch_nj = double(tp.fetches) * cfg.l1i.access_energy_nj;
-  const double rf_nj = double(tp.int_reads + tp.int_writes + tp.fp_reads + tp.fp_writes) * e.register_file_access_nj;
-  const double l2_stream_nj = chip.l2().counters().energy_nj + chip.stream().counters().energy_nj;
+  const double fetch_nj = double(mix.retired) * cfg.l1i.access_energy_nj;
+  const double rf_nj = double(mix.int_reads + mix.int_writes + mix.fp_reads + mix.fp_writes) * e.register_file_access_nj;
+  const double l2_stream_nj = x(chip.l2().counters().energy_nj + chip.stream().counters().energy_nj);
+  const double dram_nj = x(dram.energy_nj);
   nlohmann::json& en = j["energy_nj"];
   en["l1_data"] = l1d.energy_nj;
   en["l2_and_stream"] = l2_stream_nj;
-  en["dram"] = dram.energy_nj;
+  en["dram"] = dram_nj;
   en["instruction_fetch"] = fetch_nj;
   en["register_file"] = rf_nj;
   en["xu"] = xu_nj;
-  en["total"] = l1d.energy_nj + l2_stream_nj + dram.energy_nj + fetch_nj + rf_nj + xu_nj;
+  en["total"] = l1d.energy_nj + l2_stream_nj + dram_nj + fetch_nj + rf_nj + xu_nj;
 
   j["simulation"] = {{"timing_mode", to_string(cfg.timing.mode)},
                      {"quantum_cycles", cfg.timing.quantum_cycles},
@@ -203,7 +254,19 @@ std::string summary_text(const nlohmann::json& r) {
       e["instruction_fetch"].get<double>() * 1e-6, e["register_file"].get<double>() * 1e-6,
       e["xu"].get<double>() * 1e-6, mode.c_str(), s["wall_seconds"].get<double>(),
       s["instructions_per_second"].get<double>() * 1e-6, s["rays_per_second"].get<double>() * 1e-6);
-  return buf;
+  std::string text = buf;
+  if (r.contains("sampling")) {
+    const auto& sm = r["sampling"];
+    const double timed = sm["timed_instructions"].get<double>();
+    const double all = timed + sm["fast_forward_instructions"].get<double>();
+    std::snprintf(buf, sizeof buf,
+                  "sampling       %.1f%% of instructions timed (%u of every %u cycles); memory, XU and energy "
+                  "figures extrapolated x%.2f [sampled]\n",
+                  all > 0 ? 100.0 * timed / all : 0.0, sm["detail_cycles"].get<unsigned>(),
+                  sm["period_cycles"].get<unsigned>(), sm["extrapolation_factor"].get<double>());
+    text += buf;
+  }
+  return text;
 }
 
 }  // namespace strata::chip

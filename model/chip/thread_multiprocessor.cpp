@@ -1,5 +1,6 @@
 #include "model/chip/thread_multiprocessor.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <utility>
@@ -31,6 +32,7 @@ struct ThreadMultiprocessor::Tp {
   uint32_t thread_id;
   uint32_t stack_lo, stack_hi;
   uint32_t fetch_line = 0xFFFFFFFFu;
+  double ff_clock = 0.0;  // fast-forward time, with the fraction of a cycle kept
 };
 
 ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const TmEnvironment& env,
@@ -42,7 +44,11 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
-      xus_(env.config->tm) {
+      xus_(env.config->tm),
+      sampled_(env.config->timing.mode == transport::TimingMode::kSampled),
+      period_(env.config->timing.sample_period_cycles),
+      detail_(env.config->timing.sample_detail_cycles),
+      warmup_(env.config->timing.sample_warmup_cycles) {
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
@@ -106,25 +112,47 @@ void ThreadMultiprocessor::sync_to(Cycle t) {
 }
 
 void ThreadMultiprocessor::run() {
-  // The TP with the earliest next issue cycle goes next (ties: the lower TP). A linear scan
-  // of at most 64 cycles is cheaper than a heap here, and finding the runner-up in the same
-  // pass lets the chosen TP keep issuing until it passes the runner-up, one scan per burst.
-  // The earliest TP issues, and keeps issuing until it passes the runner-up (loosely timed:
-  // by up to timing.tp_slack_cycles, which the XU and memory calendars absorb, since they
-  // accept requests out of time order; precise: not at all).
+  // The TP with the earliest next issue cycle goes next (ties: the lower TP). It keeps
+  // issuing until it passes the runner-up (loosely timed: by up to timing.tp_slack_cycles,
+  // which the XU and memory calendars absorb, since they accept requests out of time order;
+  // precise: not at all), so the schedule is consulted once per burst.
   TpSchedule schedule(static_cast<uint32_t>(tps_.size()));
+  live_tps_ = static_cast<uint32_t>(tps_.size());
   global_cycle_ = clock_.now();
   while (schedule.top() != TpSchedule::kDone && error_.empty()) {
     const uint64_t best = schedule.top();
     const uint64_t second = schedule.runner_up();
     const uint32_t index = static_cast<uint32_t>(best & 63u);
-    const Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : (second >> 6) + burst_slack_;
+    const Cycle start = best >> 6;
+    Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : (second >> 6) + burst_slack_;
     Tp& tp = *tps_[index];
-    for (Cycle t = best >> 6;; t = tp.timing.next_issue()) {
+    Cycle window = 0;
+    if (sampled_) {
+      window = start - start % period_;
+      if (start - window >= detail_) {
+        // Fast-forward: batches of up to a quantum past the runner-up, never into the next
+        // detailed window.
+        const Cycle next_window = window + period_;
+        const Cycle ff_until =
+            second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + config_.timing.quantum_cycles);
+        if (fast_forward(tp, std::max(ff_until, start + 1))) {
+          schedule.set(index, tp.timing.next_issue());
+        } else {
+          counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
+          schedule.done(index);
+          --live_tps_;
+        }
+        continue;
+      }
+      until = std::min(until, window + detail_ - 1);  // the window's last cycle
+    }
+    for (Cycle t = start;; t = tp.timing.next_issue()) {
       sync_to(t);
+      if (sampled_) measuring_ = count_measured(window, t);
       if (!step(tp)) {
         counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
         schedule.done(index);
+        --live_tps_;
         break;
       }
       if (tp.timing.next_issue() > until) {
@@ -136,12 +164,74 @@ void ThreadMultiprocessor::run() {
   finished_ = error_.empty();
 }
 
+bool ThreadMultiprocessor::count_measured(Cycle window, Cycle t) {
+  // A TP lagging in an older window does not count; the first TP in a newer one restarts.
+  if (window > measure_window_) {
+    measure_window_ = window;
+    measured_ = measured_waits_ = measured_wait_cycles_ = 0;
+  }
+  if (window != measure_window_ || t - window < warmup_) return false;
+  ++measured_;
+  return true;
+}
+
+double ThreadMultiprocessor::fast_forward_cpi(Cycle window) {
+  // Once per fast-forward stretch. The TM's TPs share its issue slots, XUs and memory, so
+  // the TP-cycles of the measured part of the window (its length times the TPs running) are
+  // spread over the instructions issued in it. Stream and global-register operations are
+  // charged apart, at their measured latency: a TP waiting for work spends its time in them,
+  // and must not slow down a TP of the same TM that has work. A window in which nothing
+  // issued (all stalled) counts as one instruction.
+  if (cpi_window_ != window) {
+    cpi_window_ = window;
+    const bool have = window == measure_window_;
+    const double tp_cycles = double(detail_ - warmup_) * double(std::max<uint32_t>(live_tps_, 1));
+    const double issued = double(std::max<uint64_t>(have ? measured_ : 0, 1));
+    const double waits = have ? double(measured_waits_) : 0.0;
+    const double wait_cycles = std::min(tp_cycles, have ? double(measured_wait_cycles_) : 0.0);
+    cpi_ = tp_cycles / issued;
+    wait_cycles_ = waits > 0 ? wait_cycles / waits : double(config_.global_register_latency_cycles);
+    compute_cpi_ = std::max(1.0, (tp_cycles - wait_cycles) / std::max(1.0, issued - waits));
+  }
+  return cpi_;
+}
+
+bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
+  const Cycle start = tp.timing.next_issue();
+  sync_to(start);
+  const double cpi = fast_forward_cpi(start - start % period_);
+  if (tp.ff_clock + 1.0 <= double(start)) tp.ff_clock = double(start);  // detailed time moved it
+  // The batch is sized by the average cost, and charged by what it ran.
+  const double span = double(until) - tp.ff_clock;
+  const uint64_t batch = span > cpi ? static_cast<uint64_t>(span / cpi) : 1u;
+  current_ = &tp;
+  functional_ = true;
+  ff_start_ = tp.ff_clock;
+  ff_waits_ = 0;
+  const iss::RunResult r = tp.hart.run(batch);
+  current_ = nullptr;
+  functional_ = false;
+  counters_.instructions += r.executed;
+  if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, global_cycle_);
+  const uint64_t waits = std::min<uint64_t>(ff_waits_, r.executed);
+  tp.ff_clock += double(r.executed - waits) * compute_cpi_ + double(waits) * wait_cycles_;
+  const Cycle next = std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock)));
+  tp.timing.reset(next);  // the scoreboard is empty when detailed timing resumes
+  tp.fetch_line = 0xFFFFFFFFu;
+  if (!error_.empty()) return false;
+  if (r.reason != iss::StopReason::kInstructionLimit) {
+    if (!r.ok()) fail(tp, "firmware stopped: " + iss::describe(r));
+    return false;
+  }
+  return true;
+}
+
 Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
                                      AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                                      MemoryExtension* result) {
   transport::PooledPayload gp(pool_);
-  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only);
+  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only, functional_);
   const MemoryExtension& ext = gp.ext();
   sc_core::sc_time delay = clock_.delay_until(at);
   port->b_transport(*gp, delay);
@@ -219,11 +309,18 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     return false;
   }
   ++counters_.instructions;
+  ++counters_.detailed_instructions;
   if (trace_.enabled()) trace_.count(tr_instructions_, 1, global_cycle_);
   if (memory_like) {
     Cycle ready = earliest + 1;
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
-    if (hook_timed_) ready = std::max(ready, hook_ready_);
+    if (hook_timed_) {
+      ready = std::max(ready, hook_ready_);
+      if (measuring_) {
+        ++measured_waits_;
+        measured_wait_cycles_ += ready - earliest;
+      }
+    }
     tp.timing.complete_memory(decoded, earliest, ready);
   } else {
     // The pipeline mode belongs to the TM. A TP configured it before its fused ops, but
@@ -251,6 +348,9 @@ bool ThreadMultiprocessor::step(Tp& tp) {
 iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   iss::HookResult result;
   Tp& tp = *current_;
+  if (functional_)  // dated as fast_forward() will charge the batch
+    request_cycle_ = static_cast<Cycle>(ff_start_ + double(call.retired_in_run - ff_waits_) * compute_cpi_ +
+                                        double(ff_waits_) * wait_cycles_);
   const uint32_t tp_index = tp.thread_id % config_.tps_per_tm;
   switch (call.op) {
     case iss::Op::kStThreadId: result.dest[0] = tp.thread_id; return result;
@@ -275,6 +375,7 @@ iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
       if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
       ++env_.globals->operations;
       ++counters_.global_register_ops;
+      if (functional_) ++ff_waits_;
       hook_timed_ = true;
       hook_ready_ = request_cycle_ + config_.global_register_latency_cycles;
       return result;
@@ -298,6 +399,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   MemoryExtension ext;
   uint8_t scratch[48] = {};
   ++counters_.stream_requests;
+  if (functional_) ++ff_waits_;
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
       hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,

@@ -8,6 +8,10 @@
 // (precise). A TP that has halted leaves the schedule and costs nothing; one that is stalled
 // is simply scheduled at the cycle it can issue again, so no cycle is ever ticked idly.
 //
+// Sampled timing runs the same model in short detailed windows and, between them, runs each
+// TP's instructions in batches, functionally, advancing its time by the cycles per
+// instruction its TM showed in the last detailed window (docs/sampled-timing.md).
+//
 // Each instruction is first executed functionally (the hart; loads and stores go to the
 // sparse backing store), then timed: its fetch (I-cache, on a change of cache line), its
 // operands (scoreboard), its unit (XU crossbar) or its memory access (L1 socket, the TP's
@@ -51,6 +55,7 @@ struct TmEnvironment {
 
 struct TmCounters {
   uint64_t instructions = 0;
+  uint64_t detailed_instructions = 0;  // timed one by one (all of them unless sampled)
   uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
   uint64_t local_accesses = 0;         // stack accesses served by TP local memory
   uint64_t l1_requests = 0;
@@ -86,6 +91,10 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   void run();
   void sync_to(transport::Cycle t);
   bool step(Tp& tp);  // false: the TP is done (halted, or failed)
+  // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
+  bool fast_forward(Tp& tp, transport::Cycle until);
+  double fast_forward_cpi(transport::Cycle window);
+  bool count_measured(transport::Cycle window, transport::Cycle t);  // true: t is measured
   transport::Cycle fetch(Tp& tp, uint32_t pc);
   transport::Cycle time_data_access(Tp& tp, transport::Cycle at);
   transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
@@ -110,6 +119,23 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   std::string error_;
   bool finished_ = false;
   transport::Cycle global_cycle_ = 0;  // global time, as of this thread's last wait
+  uint32_t live_tps_ = 0;              // TPs that have not halted
+
+  // Sampled timing.
+  bool sampled_ = false;
+  transport::Cycle period_ = 0, detail_ = 0, warmup_ = 0;
+  transport::Cycle measure_window_ = 0;  // the detailed window being measured (its first cycle)
+  uint64_t measured_ = 0;                // instructions issued in its measured part
+  uint64_t measured_waits_ = 0;          // of which stream and global-register operations
+  uint64_t measured_wait_cycles_ = 0;    // their cycles from request to answer
+  bool measuring_ = false;               // the instruction being stepped is measured
+  transport::Cycle cpi_window_ = ~transport::Cycle{0};
+  double cpi_ = 1.0;         // fast-forward: cycles per instruction of one TP, on average
+  double compute_cpi_ = 1.0; // ... of an instruction that is not a stream/global operation
+  double wait_cycles_ = 1.0; // ... of a stream or global-register operation
+  bool functional_ = false;  // inside a fast-forward batch
+  double ff_start_ = 0.0;    // the batch's start cycle, for dating its STRaTA ops
+  uint64_t ff_waits_ = 0;    // stream/global operations in the batch so far
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;

@@ -83,6 +83,7 @@ class Hart {
   std::array<uint32_t, 32> x_{};
   std::array<uint32_t, 32> f_{};
   uint32_t pc_ = 0;
+  uint64_t run_retired_ = 0;  // for HookCall::retired_in_run
   uint32_t fflags_ = 0, frm_ = 0;
   uint32_t mstatus_ = 0, mtvec_ = 0, mepc_ = 0, mcause_ = 0, mtval_ = 0, mscratch_ = 0, mie_ = 0;
   uint64_t instret_offset_ = 0, cycle_offset_ = 0, stall_cycles_ = 0;

@@ -184,7 +184,7 @@ typename Hart<Memory>::Outcome Hart<Memory>::exec_strata(const Decoded& d, uint3
   };
   uint32_t in[kMaxStrataMemWords];
   uint32_t out[kMaxStrataMemWords];
-  HookCall call{d.op, hart_id_, source(info.role[1], d.rs1), source(info.role[2], d.rs2), in, out};
+  HookCall call{d.op, hart_id_, source(info.role[1], d.rs1), source(info.role[2], d.rs2), in, out, run_retired_};
   const uint32_t addr = x_[d.rs1];
   if (const unsigned n = strata_mem_in_words(d.op)) {
     cause = cause::kLoadMisaligned;
@@ -447,6 +447,7 @@ RunResult Hart<Memory>::run_loop(uint64_t max_instructions) {
         case Op::kStHalt: result.reason = StopReason::kHalt; goto stop_retired;
         case Op::kCount: STRATA_ILLEGAL();
         default:  // the rest of the STRaTA extension
+          run_retired_ = retired;
           switch (exec_strata(d, pc, cause, tval, result)) {
             case Outcome::kOk: break;
             case Outcome::kException: goto exception;

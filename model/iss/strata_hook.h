@@ -18,6 +18,9 @@ struct HookCall {
   uint32_t rs2;
   const uint32_t* in;  // memory operand read from x[rs1]: strata_mem_in_words(op) words
   uint32_t* out;       // memory result for x[rs1]: strata_mem_out_words(op) words
+  // Instructions the current Hart::run() call retired before this one: an embedder that runs
+  // many instructions per call (sampled timing's fast-forward) dates the op with it.
+  uint64_t retired_in_run = 0;
 };
 
 enum class HookStatus : uint8_t {

@@ -33,6 +33,11 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   }
   const MemoryExtension* ext = gp.get_extension<MemoryExtension>();
   const bool stream = ext != nullptr && transport::is_stream_access(ext->access);
+  if (ext != nullptr && ext->functional) {
+    // Fast-forward (sampled timing): pass it on, book nothing, count nothing.
+    (stream ? stream_side : l2_side)->b_transport(gp, delay);
+    return;
+  }
   const uint32_t bytes = gp.get_data_length();
   const uint32_t flits = std::max<uint32_t>(1, (bytes + config_.link_bytes_per_cycle - 1) / config_.link_bytes_per_cycle);
   const bool data_in = gp.is_write();  // a store or push carries its data toward the target

@@ -53,11 +53,14 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
 
   const Cycle now = clock_.now();
   const Cycle t = clock_.request_cycle(delay);
-  Counters& c = counters_;
+  // A functional access (sampled timing's fast-forward) moves rays like any other, but books
+  // no port and counts nothing: the statistics hold the detailed windows only.
+  Counters uncounted;
+  Counters& c = ext->functional ? uncounted : counters_;
   ++c.accesses;
   c.energy_nj += energy_per_access_;
   Cycle done = t + config_.query_latency_cycles;
-  if (moves_ray) {
+  if (moves_ray && !ext->functional) {
     ports_.retire_before(now);
     const Cycle slot = ports_.book(t, 1).first;
     if (slot > t) {
