@@ -34,8 +34,8 @@ struct TimingConfig {
   // first sample_warmup_cycles of a detailed window refill the scoreboards and calendars
   // and are not measured. docs/sampled-timing.md.
   uint32_t sample_period_cycles = 100000;
-  uint32_t sample_detail_cycles = 10000;
-  uint32_t sample_warmup_cycles = 2000;
+  uint32_t sample_detail_cycles = 20000;
+  uint32_t sample_warmup_cycles = 8000;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

@@ -69,6 +69,21 @@ TEST(ChipConfig, ErrorsNameTheFieldAndTheProblem) {
   EXPECT_NE(e.find("fewer than one per TP"), std::string::npos) << e;
 }
 
+TEST(ChipConfig, SampledTimingWindowsMustFit) {
+  const std::string trax = config_dir() + "trax.json";
+  const ChipConfig ok = load_chip_config(trax, {"timing.mode=sampled"});
+  EXPECT_EQ(ok.timing.mode, transport::TimingMode::kSampled);
+  EXPECT_EQ(to_json(ok)["timing"]["mode"], "sampled");
+  // The measured part of a detailed window must hold at least one quantum.
+  std::string e = error_of(trax, {"timing.mode=sampled", "timing.sample_detail_cycles=2000",
+                                  "timing.sample_warmup_cycles=1500"});
+  EXPECT_NE(e.find("timing.sample_detail_cycles"), std::string::npos) << e;
+  e = error_of(trax, {"timing.mode=sampled", "timing.sample_period_cycles=20000"});
+  EXPECT_NE(e.find("timing.sample_period_cycles"), std::string::npos) << e;
+  // Other modes ignore the sampling fields.
+  EXPECT_EQ(error_of(trax, {"timing.sample_period_cycles=20000"}), "");
+}
+
 TEST(ChipConfig, BadFilesAreNamed) {
   const auto dir = std::filesystem::temp_directory_path();
   const std::string bad_json = (dir / "strata-bad-config.json").string();

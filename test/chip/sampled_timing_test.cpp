@@ -1,0 +1,99 @@
+// Sampled timing end to end: runs the built strata-sim (STRATA_SIM_EXE) on a small Cornell
+// frame in loosely-timed and in sampled mode. Sampling must not change what is computed (the
+// image and ray statistics still equal the native twin's, which --check enforces), it must
+// actually fast-forward, and its frame time must stay close to the loosely-timed one.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+ public:
+  TempDir() : path_(fs::temp_directory_path() / ("strata-sampled-" + std::to_string(::getpid()))) {
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Small windows, so a 32x32 frame on two TMs spans hundreds of sampling periods.
+const char* kSmallChip =
+    " --set tms=2 --set tps_per_tm=8 --set memory.stream.size_bytes=524288 --set timing.quantum_cycles=500"
+    " --set timing.sample_period_cycles=6000 --set timing.sample_detail_cycles=3000"
+    " --set timing.sample_warmup_cycles=1000 --scene cornell:size=0.2 --res 32x32 --quiet --check";
+
+nlohmann::json run_frame(const TempDir& dir, const std::string& design, const std::string& mode) {
+  const fs::path out = dir.path() / (design + "-" + mode);
+  const std::string cmd = std::string("'") + STRATA_SIM_EXE + "' run --config '" + STRATA_SOURCE_DIR +
+                          "/sim/configs/" + design + ".json' --set timing.mode=" + mode + kSmallChip + " --out '" +
+                          out.string() + "' >'" + (dir.path() / "log.txt").string() + "' 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      << design << " " << mode << ":\n" << read_text(dir.path() / "log.txt");
+  std::ifstream in(out / "stats.json");
+  if (!in) return {};
+  return nlohmann::json::parse(in);
+}
+
+class SampledTiming : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SampledTiming, KeepsTheImageAndStaysNearLooselyTimed) {
+  if (!fs::exists(std::string(STRATA_BUILD_DIR) + "/firmware/kernels/streams_pipelines.elf"))
+    GTEST_SKIP() << "no RISC-V toolchain: kernels not built";
+  TempDir dir;
+  const nlohmann::json lt = run_frame(dir, GetParam(), "lt");
+  const nlohmann::json sampled = run_frame(dir, GetParam(), "sampled");
+  ASSERT_FALSE(lt.is_null());
+  ASSERT_FALSE(sampled.is_null());
+  EXPECT_EQ(sampled["timing"]["mode"], "sampled");
+  EXPECT_EQ(sampled["rays"], lt["rays"]);  // both also equal the twin's (--check)
+
+  const auto& s = sampled["sampling"];
+  const double timed = s["timed_instructions"].get<double>();
+  const double forwarded = s["fast_forward_instructions"].get<double>();
+  const double retired = sampled["instructions"]["retired"].get<double>();
+  EXPECT_GT(timed, 0.0);
+  EXPECT_GT(forwarded, 0.2 * retired) << "half of every period should fast-forward";
+  EXPECT_DOUBLE_EQ(timed + forwarded, retired);
+  EXPECT_NEAR(s["extrapolation_factor"].get<double>(), retired / timed, 1e-9);
+
+  const double lt_cycles = lt["frame"]["cycles"].get<double>();
+  const double sampled_cycles = sampled["frame"]["cycles"].get<double>();
+  EXPECT_NEAR(sampled_cycles / lt_cycles, 1.0, 0.10) << "LT " << lt_cycles << " vs sampled " << sampled_cycles;
+  // Instruction-proportional counters are extrapolated to the whole frame.
+  const double lt_l1 = lt["memory"]["l1d"]["accesses"].get<double>();
+  EXPECT_NEAR(sampled["memory"]["l1d"]["accesses"].get<double>() / lt_l1, 1.0, 0.15);
+}
+
+std::string design_name(const ::testing::TestParamInfo<const char*>& p) {
+  return std::string(p.param) == "trax" ? "trax" : "pipelines";
+}
+
+INSTANTIATE_TEST_SUITE_P(Chip, SampledTiming, ::testing::Values("trax", "strata-pipelines"), design_name);
+
+}  // namespace
