@@ -40,6 +40,9 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
   // Sampled timing, fast-forward: do the access's function (a stream push or pop) but book no
   // time and count nothing, so the statistics hold the detailed windows only.
   bool functional = false;
+  // Sampled timing, warm-up part of a detailed window: book time as usual (refilling queues
+  // and caches) but count nothing, so the statistics hold the measured parts only.
+  bool uncounted = false;
   uint32_t treelet = kNoTreelet;
   // Response.
   StreamStatus stream_status = StreamStatus::kOk;
@@ -56,6 +59,9 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
     *this = static_cast<const MemoryExtension&>(other);
   }
 };
+
+// Whether a target counts this access in its statistics (plain TLM payloads: always).
+inline bool counts(const MemoryExtension* ext) { return ext == nullptr || !(ext->functional || ext->uncounted); }
 
 // The access class of a payload; plain TLM initiators without the extension are data accesses.
 inline AccessClass access_class_of(const tlm::tlm_generic_payload& gp, const MemoryExtension* ext) {

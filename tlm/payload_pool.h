@@ -54,7 +54,7 @@ class PooledPayload {
 // and the extension's request fields (its response fields are cleared).
 inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                            uint32_t initiator_id, uint32_t tm_id, uint32_t treelet = kNoTreelet,
-                           bool timing_only = false, bool functional = false) {
+                           bool timing_only = false, bool functional = false, bool uncounted = false) {
   const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
   gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
   gp->set_address(addr);
@@ -69,6 +69,7 @@ inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr,
   ext.treelet = treelet;
   ext.timing_only = timing_only;
   ext.functional = functional;
+  ext.uncounted = uncounted;
   ext.reset_response();
 }
 

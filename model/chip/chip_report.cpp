@@ -24,9 +24,10 @@ nlohmann::json rays_json(const kernels::RayCounters& c) {
   return j;
 }
 
-// Sampled timing measures the memory system, the XUs and the stalls in its detailed windows
-// only; their counters are extrapolated to the whole frame by instructions retired over
-// instructions timed (1 in the other modes). Occupancies, capacities and rates stay as they are.
+// Sampled timing counts memory accesses in the measured parts of its detailed windows only
+// (past the warm-up), and XU operations and stalls in the whole detailed windows; each is
+// extrapolated to the frame by instructions retired over the instructions of the part it
+// was counted in (1 in the other modes). Occupancies, capacities and rates stay as they are.
 class Extrapolation {
  public:
   explicit Extrapolation(double scale) : scale_(scale) {}
@@ -68,20 +69,24 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   const kernels::RayCounters rays = chip.ray_counters();
   j["rays"] = rays_json(rays);
 
-  uint64_t retired = 0, timed = 0;
+  uint64_t retired = 0, timed = 0, measured = 0;
   for (const auto& t : chip.tms()) {
     retired += t->counters().instructions;
     timed += t->counters().detailed_instructions;
+    measured += t->counters().measured_instructions;
   }
   const bool sampled = cfg.timing.mode == transport::TimingMode::kSampled;
   const Extrapolation x(sampled && timed > 0 ? double(retired) / double(timed) : 1.0);
+  const Extrapolation mem(sampled && measured > 0 ? double(retired) / double(measured) : 1.0);
   if (sampled)
     j["sampling"] = {{"period_cycles", cfg.timing.sample_period_cycles},
                      {"detail_cycles", cfg.timing.sample_detail_cycles},
                      {"warmup_cycles", cfg.timing.sample_warmup_cycles},
                      {"timed_instructions", timed},
+                     {"measured_instructions", measured},
                      {"fast_forward_instructions", retired - timed},
                      {"extrapolation_factor", x.scale()},
+                     {"memory_extrapolation_factor", mem.scale()},
                      {"extrapolated", "memory, XU, stall, fetch-request and energy counters (not rays, "
                                       "instructions, register-file accesses or cycles)"}};
 
@@ -111,8 +116,8 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
     xu.triangle_divides += x(u.triangle_divides);
     xu.reconfigurations += x(u.reconfigurations);
     for (unsigned m = 0; m < tm::kModeCount; ++m) xu.mode_cycles[m] += u.mode_cycles[m];
-    local += x(t->counters().local_accesses);
-    icache_requests += x(t->counters().icache_fetch_requests);
+    local += mem(t->counters().local_accesses);
+    icache_requests += mem(t->counters().icache_fetch_requests);
   }
   for (uint64_t& s : tp.stall_cycles) s = x(s);
   nlohmann::json& ins = j["instructions"];
@@ -154,21 +159,21 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   CacheSums l1d, l1i;
   for (const auto& c : chip.l1d()) {
     const auto& k = c->counters();
-    l1d.accesses += x(k.accesses);
-    l1d.hits += x(k.hits);
-    l1d.misses += x(k.misses);
-    l1d.merged += x(k.merged_misses);
-    l1d.conflicts += x(k.bank_conflicts);
-    l1d.bytes += x(k.bytes_read + k.bytes_written);
-    l1d.energy_nj += x(k.energy_nj);
+    l1d.accesses += mem(k.accesses);
+    l1d.hits += mem(k.hits);
+    l1d.misses += mem(k.misses);
+    l1d.merged += mem(k.merged_misses);
+    l1d.conflicts += mem(k.bank_conflicts);
+    l1d.bytes += mem(k.bytes_read + k.bytes_written);
+    l1d.energy_nj += mem(k.energy_nj);
   }
   for (const auto& c : chip.l1i()) {
     const auto& k = c->counters();
-    l1i.accesses += x(k.accesses);
-    l1i.hits += x(k.hits);
-    l1i.misses += x(k.misses);
-    l1i.conflicts += x(k.bank_conflicts);
-    l1i.energy_nj += x(k.energy_nj);
+    l1i.accesses += mem(k.accesses);
+    l1i.hits += mem(k.hits);
+    l1i.misses += mem(k.misses);
+    l1i.conflicts += mem(k.bank_conflicts);
+    l1i.energy_nj += mem(k.energy_nj);
   }
   nlohmann::json& mj = j["memory"];
   mj["l1d"] = {{"accesses", l1d.accesses}, {"hits", l1d.hits}, {"misses", l1d.misses},
@@ -176,12 +181,12 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
                {"hit_rate", ratio(double(l1d.hits), double(l1d.hits + l1d.misses))}, {"energy_nj", l1d.energy_nj}};
   mj["l1i"] = {{"accesses", l1i.accesses}, {"hits", l1i.hits}, {"misses", l1i.misses},
                {"bank_conflicts", l1i.conflicts}, {"energy_nj", l1i.energy_nj}};
-  mj["l2"] = x.json(chip.l2().stats().to_json());
-  mj["stream"] = x.json(chip.stream().stats().to_json());
-  mj["interconnect"] = x.json(chip.interconnect().stats().to_json());
+  mj["l2"] = mem.json(chip.l2().stats().to_json());
+  mj["stream"] = mem.json(chip.stream().stats().to_json());
+  mj["interconnect"] = mem.json(chip.interconnect().stats().to_json());
   const auto& dram = chip.dram().counters();
-  const uint64_t dram_bytes = x(dram.bytes_read + dram.bytes_written);
-  mj["dram"] = x.json(chip.dram().stats().to_json());
+  const uint64_t dram_bytes = mem(dram.bytes_read + dram.bytes_written);
+  mj["dram"] = mem.json(chip.dram().stats().to_json());
   mj["dram"]["bytes"] = dram_bytes;
   mj["dram"]["bandwidth_gb_per_s"] = ratio(double(dram_bytes), seconds) * 1e-9;
   mj["dram"]["peak_gb_per_s"] = double(cfg.dram.bytes_per_cycle) * cfg.clock_ghz;
@@ -194,8 +199,8 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   for (unsigned c = 0; c < tm::kXuClassCount; ++c) xu_nj += double(xu.total(tm::XuClass(c)).ops) * per_class[c];
   const double fetch_nj = double(mix.retired) * cfg.l1i.access_energy_nj;
   const double rf_nj = double(mix.int_reads + mix.int_writes + mix.fp_reads + mix.fp_writes) * e.register_file_access_nj;
-  const double l2_stream_nj = x(chip.l2().counters().energy_nj + chip.stream().counters().energy_nj);
-  const double dram_nj = x(dram.energy_nj);
+  const double l2_stream_nj = mem(chip.l2().counters().energy_nj + chip.stream().counters().energy_nj);
+  const double dram_nj = mem(dram.energy_nj);
   nlohmann::json& en = j["energy_nj"];
   en["l1_data"] = l1d.energy_nj;
   en["l2_and_stream"] = l2_stream_nj;
@@ -260,10 +265,11 @@ std::string summary_text(const nlohmann::json& r) {
     const double timed = sm["timed_instructions"].get<double>();
     const double all = timed + sm["fast_forward_instructions"].get<double>();
     std::snprintf(buf, sizeof buf,
-                  "sampling       %.1f%% of instructions timed (%u of every %u cycles); memory, XU and energy "
-                  "figures extrapolated x%.2f [sampled]\n",
+                  "sampling       %.1f%% of instructions timed (%u of every %u cycles, %u warm-up); memory "
+                  "figures extrapolated x%.2f, XU x%.2f [sampled]\n",
                   all > 0 ? 100.0 * timed / all : 0.0, sm["detail_cycles"].get<unsigned>(),
-                  sm["period_cycles"].get<unsigned>(), sm["extrapolation_factor"].get<double>());
+                  sm["period_cycles"].get<unsigned>(), sm["warmup_cycles"].get<unsigned>(),
+                  sm["memory_extrapolation_factor"].get<double>(), sm["extrapolation_factor"].get<double>());
     text += buf;
   }
   return text;

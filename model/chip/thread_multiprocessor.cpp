@@ -206,6 +206,7 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   const uint64_t batch = span > cpi ? static_cast<uint64_t>(span / cpi) : 1u;
   current_ = &tp;
   functional_ = true;
+  measuring_ = false;
   ff_start_ = tp.ff_clock;
   ff_waits_ = 0;
   const iss::RunResult r = tp.hart.run(batch);
@@ -231,7 +232,8 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                                      MemoryExtension* result) {
   transport::PooledPayload gp(pool_);
-  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only, functional_);
+  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only, functional_,
+                            !counting());
   const MemoryExtension& ext = gp.ext();
   sc_core::sc_time delay = clock_.delay_until(at);
   port->b_transport(*gp, delay);
@@ -252,7 +254,7 @@ Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
   const uint32_t line = pc / config_.l1i.line_bytes;
   if (line == tp.fetch_line) return 0;
   tp.fetch_line = line;
-  ++counters_.icache_fetch_requests;
+  if (counting()) ++counters_.icache_fetch_requests;
   uint32_t word = 0;
   return transact(fetch_port, AccessClass::kInstructionFetch, pc, &word, 4, tp.timing.next_issue(), true,
                   transport::kNoTreelet, tp, nullptr);
@@ -267,7 +269,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
                    "-byte local memory (stack overflow? raise tp_stack_bytes)");
       return at;
     }
-    ++counters_.local_accesses;
+    if (counting()) ++counters_.local_accesses;
     return at + 1;  // TP local memory: one cycle, no cache, no contention
   }
   // One request per cache line touched (a pipeline operand may straddle two lines); they
@@ -278,7 +280,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
   for (uint32_t a = r.first; a < r.last && error_.empty();) {
     const uint32_t end = std::min(r.last, (a / line + 1) * line);
     const uint32_t bytes = std::min<uint32_t>(end - a, sizeof scratch);
-    ++counters_.l1_requests;
+    if (counting()) ++counters_.l1_requests;
     ready = std::max(ready, transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, a,
                                      scratch, bytes, at, true, transport::kNoTreelet, tp, nullptr));
     a += bytes;
@@ -310,6 +312,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   }
   ++counters_.instructions;
   ++counters_.detailed_instructions;
+  if (counting()) ++counters_.measured_instructions;
   if (trace_.enabled()) trace_.count(tr_instructions_, 1, global_cycle_);
   if (memory_like) {
     Cycle ready = earliest + 1;
@@ -398,7 +401,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   }
   MemoryExtension ext;
   uint8_t scratch[48] = {};
-  ++counters_.stream_requests;
+  if (counting()) ++counters_.stream_requests;
   if (functional_) ++ff_waits_;
   switch (call.op) {
     case iss::Op::kStStreamCapacity:

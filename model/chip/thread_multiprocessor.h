@@ -56,6 +56,7 @@ struct TmEnvironment {
 struct TmCounters {
   uint64_t instructions = 0;
   uint64_t detailed_instructions = 0;  // timed one by one (all of them unless sampled)
+  uint64_t measured_instructions = 0;  // ... and counted in the statistics (sampled: past the warm-up)
   uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
   uint64_t local_accesses = 0;         // stack accesses served by TP local memory
   uint64_t l1_requests = 0;
@@ -95,6 +96,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool fast_forward(Tp& tp, transport::Cycle until);
   double fast_forward_cpi(transport::Cycle window);
   bool count_measured(transport::Cycle window, transport::Cycle t);  // true: t is measured
+  // Whether the current access goes into the statistics (sampled: measured parts only).
+  bool counting() const { return !sampled_ || measuring_; }
   transport::Cycle fetch(Tp& tp, uint32_t pc);
   transport::Cycle time_data_access(Tp& tp, transport::Cycle at);
   transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,

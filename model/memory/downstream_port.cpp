@@ -11,6 +11,7 @@ DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint3
   p->set_data_length(bytes);
   p->set_streaming_width(bytes);
   transport::MemoryExtension& ext = p.ext();
+  ext.uncounted = !transport::counts(origin);  // what the requester did not count, below neither
   if (origin != nullptr) {
     ext.initiator_id = origin->initiator_id;
     ext.tm_id = origin->tm_id;
@@ -20,8 +21,10 @@ DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint3
 
   sc_core::sc_time delay = clock_.delay_until(at);
   socket_->b_transport(*p, delay);
-  ++requests_;
-  bytes_ += bytes;
+  if (!ext.uncounted) {
+    ++requests_;
+    bytes_ += bytes;
+  }
   return DownstreamResult{p->is_response_ok(), clock_.request_cycle(delay), ext.served_by};
 }
 

@@ -69,16 +69,18 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   const uint64_t bursts = (bytes + config_.burst_bytes - 1) / config_.burst_bytes;
   const double energy = static_cast<double>(bursts) * config_.access_energy_nj;
   const Cycle unloaded = data_from + (bytes + config_.channel_bytes_per_cycle() - 1) / config_.channel_bytes_per_cycle();
-  ChannelCounters& k = channels_[ch];
-  k.accesses += bursts;
-  ++k.requests;
-  (write ? k.bytes_written : k.bytes_read) += bytes;
-  k.queued_cycles += b.end() > unloaded ? b.end() - unloaded : 0;
-  k.energy_nj += energy;
-  counters_.accesses += bursts;
-  ++counters_.requests;
-  (write ? counters_.bytes_written : counters_.bytes_read) += bytes;
-  counters_.energy_nj += energy;
+  if (transport::counts(ext)) {  // sampled timing measures part of each detailed window only
+    ChannelCounters& k = channels_[ch];
+    k.accesses += bursts;
+    ++k.requests;
+    (write ? k.bytes_written : k.bytes_read) += bytes;
+    k.queued_cycles += b.end() > unloaded ? b.end() - unloaded : 0;
+    k.energy_nj += energy;
+    counters_.accesses += bursts;
+    ++counters_.requests;
+    (write ? counters_.bytes_written : counters_.bytes_read) += bytes;
+    counters_.energy_nj += energy;
+  }
 
   if (trace_.enabled()) {
     trace_.count(tr_bandwidth_[ch], bytes, now);

@@ -48,7 +48,7 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   transport::ReservationCalendar& link = links_[stream ? config_.l2_banks : bank_of(gp.get_address())];
   in.retire_before(now);
   link.retire_before(now);
-  Counters& c = counters_;
+  Counters& c = transport::counts(ext) ? counters_ : uncounted_;  // sampled: warm-up and fast-forward
   const Cycle granted = in.book(t, 1).first;
   if (granted > t) {
     ++c.port_conflicts;

@@ -56,6 +56,7 @@ class Interconnect : public sc_core::sc_module {
   std::vector<transport::ReservationCalendar> tm_ports_;
   std::vector<transport::ReservationCalendar> links_;  // L2 banks, then the stream memory
   Counters counters_;
+  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
   StatGroup stats_;
   WindowTrace trace_;
   std::size_t tr_bytes_, tr_conflicts_;

@@ -53,7 +53,7 @@ void L1InstructionCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_t
   const uint32_t bank = core_.bank_of(line);
   const Cycle slot = core_.book_bank(bank, t, now);
   const Cycle answer = slot + config_.hit_latency_cycles;
-  Counters& c = counters_;
+  Counters& c = transport::counts(ext) ? counters_ : uncounted_;  // sampled: warm-up and fast-forward
   ++c.accesses;
   c.bytes_read += bytes;
   c.energy_nj += config_.access_energy_nj;

@@ -48,6 +48,7 @@ class L1InstructionCache : public sc_core::sc_module {
   CacheCore core_;
   DownstreamPort below_;
   Counters counters_;
+  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
   StatGroup stats_;
   WindowTrace trace_;
   std::size_t tr_accesses_, tr_misses_;

@@ -56,6 +56,7 @@ class L2Cache : public sc_core::sc_module {
   CacheCore core_;
   DownstreamPort below_;
   Counters counters_;
+  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
   StatGroup stats_;
   WindowTrace trace_;
   std::size_t tr_accesses_, tr_misses_, tr_conflicts_;

@@ -53,10 +53,10 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
 
   const Cycle now = clock_.now();
   const Cycle t = clock_.request_cycle(delay);
-  // A functional access (sampled timing's fast-forward) moves rays like any other, but books
-  // no port and counts nothing: the statistics hold the detailed windows only.
-  Counters uncounted;
-  Counters& c = ext->functional ? uncounted : counters_;
+  // A functional access (sampled timing's fast-forward) moves rays like any other but books
+  // no port; neither it nor a warm-up access is counted: the statistics hold the measured
+  // parts of the detailed windows only.
+  Counters& c = transport::counts(ext) ? counters_ : uncounted_;
   ++c.accesses;
   c.energy_nj += energy_per_access_;
   Cycle done = t + config_.query_latency_cycles;

@@ -63,6 +63,7 @@ class StreamMemory : public sc_core::sc_module {
   StreamScheduler scheduler_;
   transport::ReservationCalendar ports_;
   Counters counters_;
+  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
   StatGroup stats_;
   uint64_t stored_ = 0, capacity_ = 0;  // mirrors for the statistics tree
   WindowTrace trace_;
