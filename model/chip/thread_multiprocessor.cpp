@@ -10,6 +10,12 @@
 
 namespace strata::chip {
 
+namespace {
+// How far past the runner-up a fast-forward batch may run, in quanta: longer batches spread
+// the cost of switching TPs over more instructions.
+constexpr transport::Cycle kFastForwardQuanta = 4;
+}  // namespace
+
 using transport::AccessClass;
 using transport::Cycle;
 using transport::MemoryExtension;
@@ -32,7 +38,8 @@ struct ThreadMultiprocessor::Tp {
   uint32_t thread_id;
   uint32_t stack_lo, stack_hi;
   uint32_t fetch_line = 0xFFFFFFFFu;
-  double ff_clock = 0.0;  // fast-forward time, with the fraction of a cycle kept
+  double ff_clock = 0.0;       // fast-forward time, with the fraction of a cycle kept
+  bool forwarded = false;      // fast-forwarded since it was last timed in detail
 };
 
 ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const TmEnvironment& env,
@@ -130,11 +137,12 @@ void ThreadMultiprocessor::run() {
     if (sampled_) {
       window = start - start % period_;
       if (start - window >= detail_) {
-        // Fast-forward: batches of up to a quantum past the runner-up, never into the next
-        // detailed window.
+        // Fast-forward: batches of up to kFastForwardQuanta quanta past the runner-up, never
+        // into the next detailed window. Nothing is booked, so running that far ahead only
+        // reorders stream operations between TMs, which the kernels are built to tolerate.
         const Cycle next_window = window + period_;
-        const Cycle ff_until =
-            second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + config_.timing.quantum_cycles);
+        const Cycle ahead = kFastForwardQuanta * Cycle{config_.timing.quantum_cycles};
+        const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());
         } else {
@@ -145,6 +153,11 @@ void ThreadMultiprocessor::run() {
         continue;
       }
       until = std::min(until, window + detail_ - 1);  // the window's last cycle
+      if (tp.forwarded) {  // detailed timing resumes with an empty scoreboard
+        tp.timing.reset(start);
+        tp.fetch_line = 0xFFFFFFFFu;
+        tp.forwarded = false;
+      }
     }
     for (Cycle t = start;; t = tp.timing.next_issue()) {
       sync_to(t);
@@ -216,9 +229,8 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, global_cycle_);
   const uint64_t waits = std::min<uint64_t>(ff_waits_, r.executed);
   tp.ff_clock += double(r.executed - waits) * compute_cpi_ + double(waits) * wait_cycles_;
-  const Cycle next = std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock)));
-  tp.timing.reset(next);  // the scoreboard is empty when detailed timing resumes
-  tp.fetch_line = 0xFFFFFFFFu;
+  tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
+  tp.forwarded = true;
   if (!error_.empty()) return false;
   if (r.reason != iss::StopReason::kInstructionLimit) {
     if (!r.ok()) fail(tp, "firmware stopped: " + iss::describe(r));

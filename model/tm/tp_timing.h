@@ -41,6 +41,8 @@ class TpTiming {
 
   // Everything ready, next issue slot at `start`; counters kept.
   void reset(Cycle start);
+  // Only moves the next issue slot (sampled timing's fast-forward, which reset()s once it ends).
+  void skip_to(Cycle start) { next_slot_ = start; }
 
   // Memory-like ops (Route::kMemory) go through begin_memory/complete_memory.
   bool is_memory(const iss::Decoded& d) const { return (*table_)[d.op].route == Route::kMemory; }
