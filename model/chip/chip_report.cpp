@@ -69,15 +69,29 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   const kernels::RayCounters rays = chip.ray_counters();
   j["rays"] = rays_json(rays);
 
-  uint64_t retired = 0, timed = 0, measured = 0;
+  // Sampled timing: each counter is extrapolated by the instructions that cause it, whose
+  // whole-frame counts the ISS knows exactly: fetches by instructions, data traffic by
+  // loads/stores/pipeline loads, stream traffic by stream operations.
+  uint64_t retired = 0, timed = 0, measured = 0, measured_data = 0, measured_stream = 0;
+  iss::Counters frame_mix;
   for (const auto& t : chip.tms()) {
     retired += t->counters().instructions;
     timed += t->counters().detailed_instructions;
     measured += t->counters().measured_instructions;
+    measured_data += t->counters().measured_data_ops;
+    measured_stream += t->counters().stream_requests;
+    frame_mix += t->iss_counters();
   }
+  uint64_t frame_data = 0;
+  for (unsigned c = 0; c < iss::kClassCount; ++c)
+    if (is_data_op(iss::InstrClass(c))) frame_data += frame_mix.by_class[c];
+  const uint64_t frame_stream = frame_mix.of(iss::InstrClass::kStrataStream);
   const bool sampled = cfg.timing.mode == transport::TimingMode::kSampled;
-  const Extrapolation x(sampled && timed > 0 ? double(retired) / double(timed) : 1.0);
-  const Extrapolation mem(sampled && measured > 0 ? double(retired) / double(measured) : 1.0);
+  auto factor = [&](uint64_t all, uint64_t part) { return sampled && part > 0 ? double(all) / double(part) : 1.0; };
+  const Extrapolation x(factor(retired, timed));
+  const Extrapolation fetch(factor(retired, measured));
+  const Extrapolation mem(factor(frame_data, measured_data));
+  const Extrapolation stream(factor(frame_stream, measured_stream));
   if (sampled)
     j["sampling"] = {{"period_cycles", cfg.timing.sample_period_cycles},
                      {"detail_cycles", cfg.timing.sample_detail_cycles},
@@ -87,6 +101,8 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
                      {"fast_forward_instructions", retired - timed},
                      {"extrapolation_factor", x.scale()},
                      {"memory_extrapolation_factor", mem.scale()},
+                     {"fetch_extrapolation_factor", fetch.scale()},
+                     {"stream_extrapolation_factor", stream.scale()},
                      {"extrapolated", "memory, XU, stall, fetch-request and energy counters (not rays, "
                                       "instructions, register-file accesses or cycles)"}};
 
@@ -117,7 +133,7 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
     xu.reconfigurations += x(u.reconfigurations);
     for (unsigned m = 0; m < tm::kModeCount; ++m) xu.mode_cycles[m] += u.mode_cycles[m];
     local += mem(t->counters().local_accesses);
-    icache_requests += mem(t->counters().icache_fetch_requests);
+    icache_requests += fetch(t->counters().icache_fetch_requests);
   }
   for (uint64_t& s : tp.stall_cycles) s = x(s);
   nlohmann::json& ins = j["instructions"];
@@ -169,11 +185,11 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   }
   for (const auto& c : chip.l1i()) {
     const auto& k = c->counters();
-    l1i.accesses += mem(k.accesses);
-    l1i.hits += mem(k.hits);
-    l1i.misses += mem(k.misses);
-    l1i.conflicts += mem(k.bank_conflicts);
-    l1i.energy_nj += mem(k.energy_nj);
+    l1i.accesses += fetch(k.accesses);
+    l1i.hits += fetch(k.hits);
+    l1i.misses += fetch(k.misses);
+    l1i.conflicts += fetch(k.bank_conflicts);
+    l1i.energy_nj += fetch(k.energy_nj);
   }
   nlohmann::json& mj = j["memory"];
   mj["l1d"] = {{"accesses", l1d.accesses}, {"hits", l1d.hits}, {"misses", l1d.misses},
@@ -182,7 +198,7 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   mj["l1i"] = {{"accesses", l1i.accesses}, {"hits", l1i.hits}, {"misses", l1i.misses},
                {"bank_conflicts", l1i.conflicts}, {"energy_nj", l1i.energy_nj}};
   mj["l2"] = mem.json(chip.l2().stats().to_json());
-  mj["stream"] = mem.json(chip.stream().stats().to_json());
+  mj["stream"] = stream.json(chip.stream().stats().to_json());
   mj["interconnect"] = mem.json(chip.interconnect().stats().to_json());
   const auto& dram = chip.dram().counters();
   const uint64_t dram_bytes = mem(dram.bytes_read + dram.bytes_written);
@@ -199,7 +215,7 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   for (unsigned c = 0; c < tm::kXuClassCount; ++c) xu_nj += double(xu.total(tm::XuClass(c)).ops) * per_class[c];
   const double fetch_nj = double(mix.retired) * cfg.l1i.access_energy_nj;
   const double rf_nj = double(mix.int_reads + mix.int_writes + mix.fp_reads + mix.fp_writes) * e.register_file_access_nj;
-  const double l2_stream_nj = mem(chip.l2().counters().energy_nj + chip.stream().counters().energy_nj);
+  const double l2_stream_nj = mem(chip.l2().counters().energy_nj) + stream(chip.stream().counters().energy_nj);
   const double dram_nj = mem(dram.energy_nj);
   nlohmann::json& en = j["energy_nj"];
   en["l1_data"] = l1d.energy_nj;

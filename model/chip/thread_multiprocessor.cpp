@@ -193,15 +193,16 @@ double ThreadMultiprocessor::fast_forward_cpi(Cycle window) {
   // the TP-cycles of the measured part of the window (its length times the TPs running) are
   // spread over the instructions issued in it. Stream and global-register operations are
   // charged apart, at their measured latency: a TP waiting for work spends its time in them,
-  // and must not slow down a TP of the same TM that has work. A window in which nothing
-  // issued (all stalled) counts as one instruction.
+  // and must not slow down a TP of the same TM that has work.
   if (cpi_window_ != window) {
     cpi_window_ = window;
-    const bool have = window == measure_window_;
+    // Fewer instructions than TPs is too little to measure (all stalled, or halting, or the
+    // window was missed): keep the rates of the last window that had enough (at first, 1).
+    if (window != measure_window_ || measured_ < std::max<uint32_t>(live_tps_, 1)) return cpi_;
     const double tp_cycles = double(detail_ - warmup_) * double(std::max<uint32_t>(live_tps_, 1));
-    const double issued = double(std::max<uint64_t>(have ? measured_ : 0, 1));
-    const double waits = have ? double(measured_waits_) : 0.0;
-    const double wait_cycles = std::min(tp_cycles, have ? double(measured_wait_cycles_) : 0.0);
+    const double issued = double(measured_);
+    const double waits = double(measured_waits_);
+    const double wait_cycles = std::min(tp_cycles, double(measured_wait_cycles_));
     cpi_ = tp_cycles / issued;
     wait_cycles_ = waits > 0 ? wait_cycles / waits : double(config_.global_register_latency_cycles);
     compute_cpi_ = std::max(1.0, (tp_cycles - wait_cycles) / std::max(1.0, issued - waits));
@@ -221,6 +222,7 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   functional_ = true;
   measuring_ = false;
   ff_start_ = tp.ff_clock;
+  ff_until_ = until;
   ff_waits_ = 0;
   const iss::RunResult r = tp.hart.run(batch);
   current_ = nullptr;
@@ -232,7 +234,7 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
   tp.forwarded = true;
   if (!error_.empty()) return false;
-  if (r.reason != iss::StopReason::kInstructionLimit) {
+  if (r.reason != iss::StopReason::kInstructionLimit && r.reason != iss::StopReason::kYield) {
     if (!r.ok()) fail(tp, "firmware stopped: " + iss::describe(r));
     return false;
   }
@@ -324,7 +326,10 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   }
   ++counters_.instructions;
   ++counters_.detailed_instructions;
-  if (counting()) ++counters_.measured_instructions;
+  if (counting()) {
+    ++counters_.measured_instructions;
+    if (is_data_op(iss::op_info(decoded.op).cls)) ++counters_.measured_data_ops;
+  }
   if (trace_.enabled()) trace_.count(tr_instructions_, 1, global_cycle_);
   if (memory_like) {
     Cycle ready = earliest + 1;
@@ -361,11 +366,21 @@ bool ThreadMultiprocessor::step(Tp& tp) {
 }
 
 iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
+  if (!functional_) return execute_op(call);
+  // Fast-forward: the op is dated as fast_forward() will charge the batch, and the batch stops
+  // once its time passes its end (a TP spinning on stream operations would overshoot).
+  auto charged = [&](uint64_t instructions) {
+    return ff_start_ + double(instructions - ff_waits_) * compute_cpi_ + double(ff_waits_) * wait_cycles_;
+  };
+  request_cycle_ = static_cast<Cycle>(charged(call.retired_in_run));
+  iss::HookResult result = execute_op(call);
+  result.yield = charged(call.retired_in_run + 1) >= double(ff_until_);
+  return result;
+}
+
+iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
   iss::HookResult result;
   Tp& tp = *current_;
-  if (functional_)  // dated as fast_forward() will charge the batch
-    request_cycle_ = static_cast<Cycle>(ff_start_ + double(call.retired_in_run - ff_waits_) * compute_cpi_ +
-                                        double(ff_waits_) * wait_cycles_);
   const uint32_t tp_index = tp.thread_id % config_.tps_per_tm;
   switch (call.op) {
     case iss::Op::kStThreadId: result.dest[0] = tp.thread_id; return result;

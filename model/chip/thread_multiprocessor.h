@@ -57,6 +57,7 @@ struct TmCounters {
   uint64_t instructions = 0;
   uint64_t detailed_instructions = 0;  // timed one by one (all of them unless sampled)
   uint64_t measured_instructions = 0;  // ... and counted in the statistics (sampled: past the warm-up)
+  uint64_t measured_data_ops = 0;      // ... of which loads, stores and pipeline loads (is_data_op)
   uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
   uint64_t local_accesses = 0;         // stack accesses served by TP local memory
   uint64_t l1_requests = 0;
@@ -65,6 +66,11 @@ struct TmCounters {
   uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode
   transport::Cycle finished_cycle = 0;
 };
+
+// Loads, stores and pipeline-input loads: the instructions whose data go through the L1.
+inline bool is_data_op(iss::InstrClass c) {
+  return c == iss::InstrClass::kLoad || c == iss::InstrClass::kStore || c == iss::InstrClass::kStrataPipeLoad;
+}
 
 class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook {
  public:
@@ -107,6 +113,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   void fail(const Tp& tp, const std::string& what);
 
   iss::HookResult execute(const iss::HookCall& call) override;
+  iss::HookResult execute_op(const iss::HookCall& call);
   iss::HookResult execute_stream(const iss::HookCall& call);
 
   TmEnvironment env_;
@@ -138,6 +145,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   double wait_cycles_ = 1.0; // ... of a stream or global-register operation
   bool functional_ = false;  // inside a fast-forward batch
   double ff_start_ = 0.0;    // the batch's start cycle, for dating its STRaTA ops
+  transport::Cycle ff_until_ = 0;  // ... and where it should end
   uint64_t ff_waits_ = 0;    // stream/global operations in the batch so far
 
   // The instruction being executed, for the hook.

@@ -227,6 +227,10 @@ typename Hart<Memory>::Outcome Hart<Memory>::exec_strata(const Decoded& d, uint3
     if (info.role[i] == Role::kIntDst) x_[fields[i]] = r.dest[i];
     if (info.role[i] == Role::kFpDst) f_[fields[i]] = r.dest[i];
   }
+  if (r.yield) {
+    stop.reason = StopReason::kYield;
+    return Outcome::kStop;
+  }
   return Outcome::kOk;
 }
 
@@ -452,7 +456,7 @@ RunResult Hart<Memory>::run_loop(uint64_t max_instructions) {
             case Outcome::kOk: break;
             case Outcome::kException: goto exception;
             case Outcome::kStop:
-              if (result.reason == StopReason::kToHost) goto stop_retired;
+              if (result.reason == StopReason::kToHost || result.reason == StopReason::kYield) goto stop_retired;
               goto stop;
           }
           break;
@@ -472,6 +476,7 @@ RunResult Hart<Memory>::run_loop(uint64_t max_instructions) {
       ++rf_counts_[rf];
       x[0] = 0;
       if constexpr (kTrace) trace_retired(trace_, hart_id_, pc, code.word_at(pc), d, x, f);
+      if (result.reason == StopReason::kYield) pc = next;  // resume after it
       goto stop;
     }
 

@@ -14,6 +14,7 @@ const char* stop_reason_name(StopReason r) {
     case StopReason::kHalt: return "halt";
     case StopReason::kTrap: return "trap";
     case StopReason::kHookError: return "STRaTA hook error";
+    case StopReason::kYield: return "yield";
   }
   return "?";
 }
@@ -39,6 +40,10 @@ std::string describe(const RunResult& r) {
     case StopReason::kHookError:
       std::snprintf(buf, sizeof buf, "STRaTA hook error at pc 0x%08x%s: %s", r.pc, insn.c_str(),
                     r.detail ? r.detail : "unspecified");
+      return buf;
+    case StopReason::kYield:
+      std::snprintf(buf, sizeof buf, "yielded to the embedder after %llu instructions, next pc 0x%08x",
+                    static_cast<unsigned long long>(r.executed), r.pc);
       return buf;
   }
   return "?";

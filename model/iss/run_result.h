@@ -11,12 +11,13 @@ enum class StopReason : uint8_t {
   kToHost,            // the program stored (code << 1) | 1 to tohost
   kHalt,              // strata.halt
   kTrap,              // an exception with no handler (mtvec == 0)
-  kHookError          // the STRaTA hook could not execute an operation
+  kHookError,         // the STRaTA hook could not execute an operation
+  kYield              // the hook asked to end the run after this instruction; run() again to continue
 };
 
 struct RunResult {
   StopReason reason = StopReason::kInstructionLimit;
-  uint32_t pc = 0;    // the stopping instruction; the next one for kInstructionLimit
+  uint32_t pc = 0;    // the stopping instruction; the next one for kInstructionLimit and kYield
   uint32_t insn = 0;  // its encoding; 0 when it could not be fetched
   uint32_t cause = 0;  // kTrap: mcause
   uint32_t tval = 0;   // kTrap: mtval

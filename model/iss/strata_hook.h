@@ -34,6 +34,9 @@ struct HookResult {
   HookStatus status = HookStatus::kOk;
   uint32_t dest[3] = {0, 0, 0};  // values for the fields rd, rs1, rs2 that the op writes
   const char* message = nullptr;  // static string
+  // kOk/kStore: end the current Hart::run() once this instruction retires (StopReason::kYield),
+  // so an embedder running long batches can stop one at the right time.
+  bool yield = false;
 };
 
 class StrataHook {
