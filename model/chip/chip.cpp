@@ -130,6 +130,10 @@ std::string Chip::error() const {
 transport::Cycle Chip::cycles() const {
   transport::Cycle c = 0;
   for (const auto& tm : tms_) c = std::max(c, tm->counters().finished_cycle);
+  if (!finished()) {  // stopped early (Ctrl-C): as far as global time got
+    const transport::Clock clock(sc_core::sc_time(1.0 / config_.clock_ghz, sc_core::SC_NS));
+    c = std::max(c, clock.now());
+  }
   return c;
 }
 

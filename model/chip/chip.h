@@ -54,7 +54,7 @@ class Chip : public sc_core::sc_module {
   // After the simulation: did every TM finish, and the first error if not.
   bool finished() const;
   std::string error() const;
-  transport::Cycle cycles() const;  // when the last TP finished
+  transport::Cycle cycles() const;  // when the last TP finished (stopped early: global time reached)
 
   // Pixels whose every sample is finished (streaming kernels), or handed out (baseline).
   uint32_t pixels_done() const;
