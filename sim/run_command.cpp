@@ -89,8 +89,9 @@ void run_frame(RunOptions o) {
   nlohmann::json report = chip::chip_report(chip, wall);
   if (interrupted) {
     report["interrupted"] = true;
-    report["frame"]["cycles_simulated_before_interrupt"] = uint64_t(sc_core::sc_time_stamp().to_seconds() * config.clock_ghz * 1e9);
+    report["frame"]["cycles_simulated_before_interrupt"] = chip.cycles();
     report["frame"]["pixels_done"] = chip.pixels_done();
+    report["frame"]["frames_per_second"] = nullptr;  // no frame was finished
   }
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);

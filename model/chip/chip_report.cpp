@@ -258,7 +258,7 @@ std::string summary_text(const nlohmann::json& r) {
       r["design"]["name"].get<std::string>().c_str(), r["chip"]["tms"].get<unsigned>(),
       r["chip"]["tps_per_tm"].get<unsigned>(), r["chip"]["clock_ghz"].get<double>(), mode.c_str(),
       r["timing"]["quantum_cycles"].get<unsigned>(), f["cycles"].get<unsigned long long>(),
-      f["seconds"].get<double>() * 1e3, f["frames_per_second"].get<double>(), mode.c_str(),
+      f["seconds"].get<double>() * 1e3, (f["frames_per_second"].is_number() ? f["frames_per_second"].get<double>() : 0.0), mode.c_str(),
       rays["primary"]["traced"].get<unsigned long long>(), rays["bounce"]["traced"].get<unsigned long long>(),
       rays["shadow"]["traced"].get<unsigned long long>(), rays["total"].get<unsigned long long>(),
       r["instructions"]["retired"].get<unsigned long long>(),
@@ -276,6 +276,12 @@ std::string summary_text(const nlohmann::json& r) {
       e["xu"].get<double>() * 1e-6, mode.c_str(), s["wall_seconds"].get<double>(),
       s["instructions_per_second"].get<double>() * 1e-6, s["rays_per_second"].get<double>() * 1e-6);
   std::string text = buf;
+  if (r.value("interrupted", false)) {  // no frame rate: the frame did not finish
+    const std::size_t from = text.find("frame "), to = text.find('\n', from);
+    std::snprintf(buf, sizeof buf, "frame          %llu cycles simulated before the interrupt, %u pixels done [%s]",
+                  f["cycles"].get<unsigned long long>(), f.value("pixels_done", 0u), mode.c_str());
+    text.replace(from, to - from, buf);
+  }
   if (r.contains("sampling")) {
     const auto& sm = r["sampling"];
     const double timed = sm["timed_instructions"].get<double>();
