@@ -56,6 +56,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       period_(env.config->timing.sample_period_cycles),
       detail_(env.config->timing.sample_detail_cycles),
       warmup_(env.config->timing.sample_warmup_cycles) {
+  while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
@@ -265,7 +266,7 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
 
 Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
   // A TP fetches through a one-line buffer: only a change of I-cache line goes to the cache.
-  const uint32_t line = pc / config_.l1i.line_bytes;
+  const uint32_t line = pc >> fetch_line_shift_;  // line sizes are powers of two (validated)
   if (line == tp.fetch_line) return 0;
   tp.fetch_line = line;
   if (counting()) ++counters_.icache_fetch_requests;

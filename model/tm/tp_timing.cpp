@@ -56,8 +56,9 @@ TpTiming::Gate TpTiming::gate(const iss::Decoded& d, const OpTiming& t, Cycle fe
       default: break;
     }
   }
-  for (unsigned b = 0; b < kPipeStateCount; ++b)
-    if (bit(t.reads_pipe, b)) consider(pipe_ready_[b], bit(pipe_from_memory_, b));
+  if (t.reads_pipe != 0)  // only the fused ops and pipeline loads
+    for (unsigned b = 0; b < kPipeStateCount; ++b)
+      if (bit(t.reads_pipe, b)) consider(pipe_ready_[b], bit(pipe_from_memory_, b));
   g.ready = std::max(g.fetched, operands);
   g.memory = memory;
   return g;
@@ -94,7 +95,7 @@ void TpTiming::retire(const iss::Decoded& d, const OpTiming& t, const Gate& g, C
   }
   // Pipeline input registers are not waited for on write (strata.settmax may follow a
   // strata.ldray still in flight), so keep whichever write lands last.
-  for (unsigned b = 0; b < kPipeStateCount; ++b) {
+  for (unsigned b = 0; t.writes_pipe != 0 && b < kPipeStateCount; ++b) {
     if (bit(t.writes_pipe, b) && result >= pipe_ready_[b]) {
       pipe_ready_[b] = result;
       pipe_from_memory_ = static_cast<uint8_t>(from_memory ? (pipe_from_memory_ | (1u << b))
