@@ -47,8 +47,9 @@ const char* kSmallChip =
     " --set timing.sample_period_cycles=6000 --set timing.sample_detail_cycles=3000"
     " --set timing.sample_warmup_cycles=1000 --scene cornell:size=0.2 --res 32x32 --quiet --check";
 
-nlohmann::json run_frame(const TempDir& dir, const std::string& design, const std::string& mode) {
-  const fs::path out = dir.path() / (design + "-" + mode);
+nlohmann::json run_frame(const TempDir& dir, const std::string& design, const std::string& mode,
+                         const std::string& tag = "") {
+  const fs::path out = dir.path() / (design + "-" + mode + tag);
   const std::string cmd = std::string("'") + STRATA_SIM_EXE + "' run --config '" + STRATA_SOURCE_DIR +
                           "/sim/configs/" + design + ".json' --set timing.mode=" + mode + kSmallChip + " --out '" +
                           out.string() + "' >'" + (dir.path() / "log.txt").string() + "' 2>&1";
@@ -88,6 +89,12 @@ TEST_P(SampledTiming, KeepsTheImageAndStaysNearLooselyTimed) {
   // Instruction-proportional counters are extrapolated to the whole frame.
   const double lt_l1 = lt["memory"]["l1d"]["accesses"].get<double>();
   EXPECT_NEAR(sampled["memory"]["l1d"]["accesses"].get<double>() / lt_l1, 1.0, 0.15);
+
+  // Deterministic: the same frame again gives the same estimates, to the bit.
+  const nlohmann::json again = run_frame(dir, GetParam(), "sampled", "-again");
+  ASSERT_FALSE(again.is_null());
+  for (const char* part : {"frame", "rays", "instructions", "memory", "xu", "energy_nj", "sampling"})
+    EXPECT_EQ(again[part], sampled[part]) << part;
 }
 
 std::string design_name(const ::testing::TestParamInfo<const char*>& p) {
