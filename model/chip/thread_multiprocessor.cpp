@@ -1,10 +1,10 @@
 #include "model/chip/thread_multiprocessor.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <utility>
 
+#include "model/chip/tm_thread_processor.h"
 #include "model/chip/tp_schedule.h"
 #include "model/iss/hart_impl.h"
 
@@ -20,27 +20,6 @@ using transport::AccessClass;
 using transport::Cycle;
 using transport::MemoryExtension;
 using transport::StreamStatus;
-
-struct ThreadMultiprocessor::Tp {
-  Tp(iss::CodeImage& code, memory::SparseMemory& backing, const TmEnvironment& env,
-     ThreadMultiprocessor* hook, uint32_t thread, uint32_t tp, uint32_t tm, const tm::OpTimingTable& table)
-      : memory(backing, env.guest_low, env.guest_high),
-        hart(code, memory, hook, thread),
-        timing(table),
-        pipe(iss::FunctionalStrataHook::Config{tp, tm, env.config->tps_per_tm, env.config->tms, 0}),
-        thread_id(thread),
-        stack_lo(env.stacks_base + thread * env.config->tp_stack_bytes),
-        stack_hi(stack_lo + env.config->tp_stack_bytes) {}
-  TpMemory memory;
-  iss::Hart<TpMemory> hart;
-  tm::TpTiming timing;
-  iss::FunctionalStrataHook pipe;  // this TP's pipeline input registers and last test
-  uint32_t thread_id;
-  uint32_t stack_lo, stack_hi;
-  uint32_t fetch_line = 0xFFFFFFFFu;
-  double ff_clock = 0.0;       // fast-forward time, with the fraction of a cycle kept
-  bool forwarded = false;      // fast-forwarded since it was last timed in detail
-};
 
 ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const TmEnvironment& env,
                                            uint32_t tm_id)
@@ -178,70 +157,6 @@ void ThreadMultiprocessor::run() {
   finished_ = error_.empty();
 }
 
-bool ThreadMultiprocessor::count_measured(Cycle window, Cycle t) {
-  // A TP lagging in an older window does not count; the first TP in a newer one restarts.
-  if (window > measure_window_) {
-    measure_window_ = window;
-    measured_ = measured_waits_ = measured_wait_cycles_ = 0;
-  }
-  if (window != measure_window_ || t - window < warmup_) return false;
-  ++measured_;
-  return true;
-}
-
-double ThreadMultiprocessor::fast_forward_cpi(Cycle window) {
-  // Once per fast-forward stretch. The TM's TPs share its issue slots, XUs and memory, so
-  // the TP-cycles of the measured part of the window (its length times the TPs running) are
-  // spread over the instructions issued in it. Stream and global-register operations are
-  // charged apart, at their measured latency: a TP waiting for work spends its time in them,
-  // and must not slow down a TP of the same TM that has work.
-  if (cpi_window_ != window) {
-    cpi_window_ = window;
-    // Fewer instructions than TPs is too little to measure (all stalled, or halting, or the
-    // window was missed): keep the rates of the last window that had enough (at first, 1).
-    if (window != measure_window_ || measured_ < std::max<uint32_t>(live_tps_, 1)) return cpi_;
-    const double tp_cycles = double(detail_ - warmup_) * double(std::max<uint32_t>(live_tps_, 1));
-    const double issued = double(measured_);
-    const double waits = double(measured_waits_);
-    const double wait_cycles = std::min(tp_cycles, double(measured_wait_cycles_));
-    cpi_ = tp_cycles / issued;
-    wait_cycles_ = waits > 0 ? wait_cycles / waits : double(config_.global_register_latency_cycles);
-    compute_cpi_ = std::max(1.0, (tp_cycles - wait_cycles) / std::max(1.0, issued - waits));
-  }
-  return cpi_;
-}
-
-bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
-  const Cycle start = tp.timing.next_issue();
-  sync_to(start);
-  const double cpi = fast_forward_cpi(start - start % period_);
-  if (tp.ff_clock + 1.0 <= double(start)) tp.ff_clock = double(start);  // detailed time moved it
-  // The batch is sized by the average cost, and charged by what it ran.
-  const double span = double(until) - tp.ff_clock;
-  const uint64_t batch = span > cpi ? static_cast<uint64_t>(span / cpi) : 1u;
-  current_ = &tp;
-  functional_ = true;
-  measuring_ = false;
-  ff_start_ = tp.ff_clock;
-  ff_until_ = until;
-  ff_waits_ = 0;
-  const iss::RunResult r = tp.hart.run(batch);
-  current_ = nullptr;
-  functional_ = false;
-  counters_.instructions += r.executed;
-  if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, global_cycle_);
-  const uint64_t waits = std::min<uint64_t>(ff_waits_, r.executed);
-  tp.ff_clock += double(r.executed - waits) * compute_cpi_ + double(waits) * wait_cycles_;
-  tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
-  tp.forwarded = true;
-  if (!error_.empty()) return false;
-  if (r.reason != iss::StopReason::kInstructionLimit && r.reason != iss::StopReason::kYield) {
-    if (!r.ok()) fail(tp, "firmware stopped: " + iss::describe(r));
-    return false;
-  }
-  return true;
-}
-
 Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
                                      AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
@@ -364,19 +279,6 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     }
   }
   return !stopped && error_.empty();
-}
-
-iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
-  if (!functional_) return execute_op(call);
-  // Fast-forward: the op is dated as fast_forward() will charge the batch, and the batch stops
-  // once its time passes its end (a TP spinning on stream operations would overshoot).
-  auto charged = [&](uint64_t instructions) {
-    return ff_start_ + double(instructions - ff_waits_) * compute_cpi_ + double(ff_waits_) * wait_cycles_;
-  };
-  request_cycle_ = static_cast<Cycle>(charged(call.retired_in_run));
-  iss::HookResult result = execute_op(call);
-  result.yield = charged(call.retired_in_run + 1) >= double(ff_until_);
-  return result;
 }
 
 iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
