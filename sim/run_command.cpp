@@ -89,7 +89,6 @@ void run_frame(RunOptions o) {
   nlohmann::json report = chip::chip_report(chip, wall);
   if (interrupted) {
     report["interrupted"] = true;
-    report["frame"]["cycles_simulated_before_interrupt"] = chip.cycles();
     report["frame"]["pixels_done"] = chip.pixels_done();
     report["frame"]["frames_per_second"] = nullptr;  // no frame was finished
   }

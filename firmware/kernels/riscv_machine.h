@@ -5,6 +5,7 @@
 #include "firmware/kernels/boot_block.h"
 #include "firmware/kernels/baseline_kernel.h"
 #include "firmware/kernels/stream_ray.h"
+#include "firmware/kernels/streams_kernel.h"
 
 namespace strata::kernels {
 
@@ -27,6 +28,11 @@ inline KernelContext kernel_context(const BootBlock& boot, uint32_t thread) {
           reinterpret_cast<const FrameParams*>(boot.frame_params),
           reinterpret_cast<Pixel*>(boot.framebuffer),
           reinterpret_cast<RayCounters*>(boot.counters) + thread};
+}
+
+// A streaming kernel's inputs: the kernel's, and the path table.
+inline StreamsContext streams_context(const BootBlock& boot, uint32_t thread) {
+  return {kernel_context(boot, thread), reinterpret_cast<PathRecord*>(boot.path_table), boot.path_slots};
 }
 
 }  // namespace strata::kernels

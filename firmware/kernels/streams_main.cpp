@@ -13,8 +13,6 @@ int main() {
   const BootBlock boot = strata_boot;
   RiscvMachine machine;
   GeneralPurposeTests tests;
-  const StreamsContext ctx{kernel_context(boot, strata_thread_id()),
-                           reinterpret_cast<PathRecord*>(boot.path_table), boot.path_slots};
-  streams_kernel(machine, tests, ctx);
+  streams_kernel(machine, tests, streams_context(boot, strata_thread_id()));
   return 0;
 }

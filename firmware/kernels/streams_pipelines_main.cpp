@@ -55,8 +55,6 @@ int main() {
   const BootBlock boot = strata_boot;
   RiscvMachine machine;
   FusedPipelines pipelines;
-  const StreamsContext ctx{kernel_context(boot, strata_thread_id()),
-                           reinterpret_cast<PathRecord*>(boot.path_table), boot.path_slots};
-  streams_kernel(machine, pipelines, ctx);
+  streams_kernel(machine, pipelines, streams_context(boot, strata_thread_id()));
   return 0;
 }

@@ -72,20 +72,20 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
   // Sampled timing: each counter is extrapolated by the instructions that cause it, whose
   // whole-frame counts the ISS knows exactly: fetches by instructions, data traffic by
   // loads/stores/pipeline loads, stream traffic by stream operations.
-  uint64_t retired = 0, timed = 0, measured = 0, measured_data = 0, measured_stream = 0;
-  iss::Counters frame_mix;
+  iss::Counters mix;  // exact in every mode: instructions, their classes, register-file accesses
+  uint64_t timed = 0, measured = 0, measured_data = 0, measured_stream = 0;
   for (const auto& t : chip.tms()) {
-    retired += t->counters().instructions;
+    mix += t->iss_counters();
     timed += t->counters().detailed_instructions;
     measured += t->counters().measured_instructions;
     measured_data += t->counters().measured_data_ops;
     measured_stream += t->counters().stream_requests;
-    frame_mix += t->iss_counters();
   }
+  const uint64_t retired = mix.retired;
   uint64_t frame_data = 0;
   for (unsigned c = 0; c < iss::kClassCount; ++c)
-    if (is_data_op(iss::InstrClass(c))) frame_data += frame_mix.by_class[c];
-  const uint64_t frame_stream = frame_mix.of(iss::InstrClass::kStrataStream);
+    if (is_data_op(iss::InstrClass(c))) frame_data += mix.by_class[c];
+  const uint64_t frame_stream = mix.of(iss::InstrClass::kStrataStream);
   const bool sampled = cfg.timing.mode == transport::TimingMode::kSampled;
   auto factor = [&](uint64_t all, uint64_t part) { return sampled && part > 0 ? double(all) / double(part) : 1.0; };
   const Extrapolation x(factor(retired, timed));
@@ -106,21 +106,13 @@ nlohmann::json chip_report(const Chip& chip, double wall_seconds) {
                      {"extrapolated", "memory, XU, stall, fetch-request and energy counters (not rays, "
                                       "instructions, register-file accesses or cycles)"}};
 
-  // Instructions, register file and XUs, summed over the TMs.
-  tm::TpStats tp;
-  iss::Counters mix;
+  // Stalls and XUs, summed over the TMs.
+  tm::TpStats tp;  // only its stall cycles: the ISS counts instructions and registers exactly
   tm::XuStats xu;
   uint64_t local = 0, icache_requests = 0;
   for (const auto& t : chip.tms()) {
     const tm::TpStats s = t->tp_stats();
-    tp.issued += s.issued;
-    tp.fetches += s.fetches;
     for (size_t i = 0; i < s.stall_cycles.size(); ++i) tp.stall_cycles[i] += s.stall_cycles[i];
-    tp.int_reads += s.int_reads;
-    tp.int_writes += s.int_writes;
-    tp.fp_reads += s.fp_reads;
-    tp.fp_writes += s.fp_writes;
-    mix += t->iss_counters();
     const tm::XuStats u = t->xus().stats(cycles);
     for (unsigned m = 0; m < tm::kModeCount; ++m)
       for (unsigned c = 0; c < tm::kXuClassCount; ++c) {
@@ -244,10 +236,18 @@ std::string summary_text(const nlohmann::json& r) {
   const auto& e = r["energy_nj"];
   const auto& s = r["simulation"];
   const std::string mode = r["timing"]["mode"].get<std::string>();
+  char frame[256];
+  if (r.value("interrupted", false))  // no frame rate: the frame did not finish
+    std::snprintf(frame, sizeof frame, "%llu cycles simulated before the interrupt, %u pixels done [%s]",
+                  f["cycles"].get<unsigned long long>(), f.value("pixels_done", 0u), mode.c_str());
+  else
+    std::snprintf(frame, sizeof frame, "%llu cycles = %.3f ms simulated -> %.2f frames/s [%s]",
+                  f["cycles"].get<unsigned long long>(), f["seconds"].get<double>() * 1e3,
+                  f["frames_per_second"].get<double>(), mode.c_str());
   std::snprintf(
       buf, sizeof buf,
       "design         %s (%u TMs x %u TPs, %.2f GHz); timing mode %s, quantum %u cycles\n"
-      "frame          %llu cycles = %.3f ms simulated -> %.2f frames/s [%s]\n"
+      "frame          %s\n"
       "rays           %llu primary, %llu bounce, %llu shadow (%llu total)\n"
       "instructions   %llu retired, %llu register-file accesses\n"
       "L1 data        %.2f%% hit rate (%llu accesses, %llu bank conflicts) [%s]\n"
@@ -257,8 +257,7 @@ std::string summary_text(const nlohmann::json& r) {
       "simulator      %.2f s wall, %.2f M simulated instructions/s, %.3f M rays/s\n",
       r["design"]["name"].get<std::string>().c_str(), r["chip"]["tms"].get<unsigned>(),
       r["chip"]["tps_per_tm"].get<unsigned>(), r["chip"]["clock_ghz"].get<double>(), mode.c_str(),
-      r["timing"]["quantum_cycles"].get<unsigned>(), f["cycles"].get<unsigned long long>(),
-      f["seconds"].get<double>() * 1e3, (f["frames_per_second"].is_number() ? f["frames_per_second"].get<double>() : 0.0), mode.c_str(),
+      r["timing"]["quantum_cycles"].get<unsigned>(), frame,
       rays["primary"]["traced"].get<unsigned long long>(), rays["bounce"]["traced"].get<unsigned long long>(),
       rays["shadow"]["traced"].get<unsigned long long>(), rays["total"].get<unsigned long long>(),
       r["instructions"]["retired"].get<unsigned long long>(),
@@ -276,12 +275,6 @@ std::string summary_text(const nlohmann::json& r) {
       e["xu"].get<double>() * 1e-6, mode.c_str(), s["wall_seconds"].get<double>(),
       s["instructions_per_second"].get<double>() * 1e-6, s["rays_per_second"].get<double>() * 1e-6);
   std::string text = buf;
-  if (r.value("interrupted", false)) {  // no frame rate: the frame did not finish
-    const std::size_t from = text.find("frame "), to = text.find('\n', from);
-    std::snprintf(buf, sizeof buf, "frame          %llu cycles simulated before the interrupt, %u pixels done [%s]",
-                  f["cycles"].get<unsigned long long>(), f.value("pixels_done", 0u), mode.c_str());
-    text.replace(from, to - from, buf);
-  }
   if (r.contains("sampling")) {
     const auto& sm = r["sampling"];
     const double timed = sm["timed_instructions"].get<double>();

@@ -242,7 +242,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   }
   ++counters_.instructions;
   ++counters_.detailed_instructions;
-  if (counting()) {
+  if (measuring_) {  // sampled timing only: the base of its extrapolation
     ++counters_.measured_instructions;
     if (is_data_op(iss::op_info(decoded.op).cls)) ++counters_.measured_data_ops;
   }

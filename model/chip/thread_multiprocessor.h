@@ -56,7 +56,7 @@ struct TmEnvironment {
 struct TmCounters {
   uint64_t instructions = 0;
   uint64_t detailed_instructions = 0;  // timed one by one (all of them unless sampled)
-  uint64_t measured_instructions = 0;  // ... and counted in the statistics (sampled: past the warm-up)
+  uint64_t measured_instructions = 0;  // sampled only: timed in the measured part (past the warm-up)
   uint64_t measured_data_ops = 0;      // ... of which loads, stores and pipeline loads (is_data_op)
   uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
   uint64_t local_accesses = 0;         // stack accesses served by TP local memory
@@ -101,6 +101,10 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
   bool fast_forward(Tp& tp, transport::Cycle until);
   double fast_forward_cpi(transport::Cycle window);
+  // Fast-forward cycles for `instructions`, of which `waits` stream/global operations.
+  double ff_charge(uint64_t instructions, uint64_t waits) const {
+    return double(instructions - waits) * compute_cpi_ + double(waits) * wait_cycles_;
+  }
   bool count_measured(transport::Cycle window, transport::Cycle t);  // true: t is measured
   // Whether the current access goes into the statistics (sampled: measured parts only).
   bool counting() const { return !sampled_ || measuring_; }

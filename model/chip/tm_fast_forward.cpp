@@ -62,7 +62,7 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   counters_.instructions += r.executed;
   if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, global_cycle_);
   const uint64_t waits = std::min<uint64_t>(ff_waits_, r.executed);
-  tp.ff_clock += double(r.executed - waits) * compute_cpi_ + double(waits) * wait_cycles_;
+  tp.ff_clock += ff_charge(r.executed, waits);
   tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
   tp.forwarded = true;
   if (!error_.empty()) return false;
@@ -77,12 +77,9 @@ iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   if (!functional_) return execute_op(call);
   // Fast-forward: the op is dated as fast_forward() will charge the batch, and the batch stops
   // once its time passes its end (a TP spinning on stream operations would overshoot).
-  auto charged = [&](uint64_t instructions) {
-    return ff_start_ + double(instructions - ff_waits_) * compute_cpi_ + double(ff_waits_) * wait_cycles_;
-  };
-  request_cycle_ = static_cast<Cycle>(charged(call.retired_in_run));
+  request_cycle_ = static_cast<Cycle>(ff_start_ + ff_charge(call.retired_in_run, ff_waits_));
   iss::HookResult result = execute_op(call);
-  result.yield = charged(call.retired_in_run + 1) >= double(ff_until_);
+  result.yield = ff_start_ + ff_charge(call.retired_in_run + 1, ff_waits_) >= double(ff_until_);
   return result;
 }
 

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "sim/ray_file.h"
-#include "test/trace/trace_test_support.h"
+#include "test/support/test_files.h"
 
 namespace strata::sim {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "scenes/scene_spec.h"
 #include "sim/ray_file.h"
-#include "test/trace/trace_test_support.h"
+#include "test/support/test_files.h"
 
 namespace strata::sim {
 namespace {

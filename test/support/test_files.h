@@ -1,4 +1,5 @@
-// Helpers shared by the test_trace suites: a fresh temp directory and raw file bytes.
+// Helpers shared by the test suites that work on files: a fresh temp directory and raw file
+// bytes and text.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -19,7 +20,7 @@ class TempDir {
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     path_ = std::filesystem::temp_directory_path() /
-            ("strata-trace-test-" + std::to_string(::getpid()) + "-" +
+            ("strata-test-" + std::to_string(::getpid()) + "-" +
              (info ? std::string(info->test_suite_name()) + "." + info->name() : "x"));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
