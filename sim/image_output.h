@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "firmware/kernels/frame_abi.h"
+#include "firmware/abi/frame_abi.h"
 
 namespace strata::sim {
 

@@ -4,32 +4,13 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "firmware/kernels/boot_block.h"
+#include "firmware/abi/boot_block.h"
+#include "model/chip/guest_layout.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
 #include "model/iss/program.h"
 
 namespace strata::sim {
-namespace {
-
-uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
-
-// Guest addresses of everything the kernel reads or writes, relative to the data region.
-struct DataLayout {
-  uint64_t image, frame, framebuffer, counters, total;
-};
-
-DataLayout plan(const scenes::SceneImage& image, const RenderSettings& s) {
-  DataLayout d{};
-  d.image = 0;  // the data region is 1 MiB aligned; the image is re-aligned below if needed
-  d.frame = align_up(image.size_bytes(), 64);
-  d.framebuffer = align_up(d.frame + sizeof(kernels::FrameParams), 64);
-  d.counters = align_up(d.framebuffer + uint64_t(s.width) * s.height * sizeof(kernels::Pixel), 64);
-  d.total = d.counters + sizeof(kernels::RayCounters);
-  return d;
-}
-
-}  // namespace
 
 std::string default_kernel_elf(const std::string& kernel) {
   return std::string(STRATA_FIRMWARE_KERNEL_DIR) + "/" + kernel + ".elf";
@@ -39,21 +20,23 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
                            const std::string& elf_path, uint64_t max_instructions,
                            IssRunStats* stats) {
   check_render_settings(settings);
-  const uint32_t treelet_bytes = image.header().treelet_bytes;
-  DataLayout d = plan(image, settings);
-  const uint64_t slack = treelet_bytes;  // room to align the image to its treelet size
-  if (d.total + slack > 0xC0000000ull)
+  chip::FrameFootprint footprint;
+  footprint.scene_image_bytes = image.size_bytes();
+  footprint.treelet_bytes = image.header().treelet_bytes;
+  footprint.pixels = settings.width * settings.height;
+  footprint.threads = 1;
+  const uint64_t data_bytes = chip::frame_layout_bytes(footprint);
+  if (data_bytes > 0xC0000000ull)
     throw std::runtime_error("iss render: scene image and frame do not fit the 32-bit guest address space");
-  iss::Program program = iss::load_program(elf_path, iss::kDefaultStackBytes, uint32_t(d.total + slack));
-  const uint64_t base = align_up(program.data_base, treelet_bytes);
+  iss::Program program = iss::load_program(elf_path, iss::kDefaultStackBytes, uint32_t(data_bytes));
+  const chip::GuestLayout g = chip::plan_frame_layout(program.data_base, footprint);
   const auto boot_addr = program.elf.symbol(kernels::kBootBlockSymbol);
   if (!boot_addr) throw std::runtime_error(elf_path + ": no '" + std::string(kernels::kBootBlockSymbol) + "' symbol: not a render kernel");
 
   const kernels::FrameParams frame = make_frame_params(image.header(), settings);
-  program.memory.write(uint32_t(base + d.image), image.bytes(), image.size_bytes());
-  program.memory.write(uint32_t(base + d.frame), &frame, sizeof frame);
-  const kernels::BootBlock boot{uint32_t(base + d.frame), uint32_t(base + d.image),
-                                uint32_t(base + d.framebuffer), uint32_t(base + d.counters), 0, 0, {0, 0}};
+  program.memory.write(uint32_t(g.scene_image), image.bytes(), image.size_bytes());
+  program.memory.write(uint32_t(g.frame), &frame, sizeof frame);
+  const kernels::BootBlock boot = chip::boot_block(g);
   program.memory.write(*boot_addr, &boot, sizeof boot);
 
   iss::FunctionalStrataHook hook;  // one hart: thread 0 of TM 0; global registers start at 0
@@ -67,9 +50,9 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   RenderResult result;
   result.seconds = seconds;
   result.image.resize(size_t(settings.width) * settings.height);
-  program.memory.read(uint32_t(base + d.framebuffer), result.image.data(),
+  program.memory.read(uint32_t(g.framebuffer), result.image.data(),
                       result.image.size() * sizeof(kernels::Pixel));
-  program.memory.read(uint32_t(base + d.counters), &result.counters, sizeof result.counters);
+  program.memory.read(uint32_t(g.counters), &result.counters, sizeof result.counters);
   if (stats) {
     stats->instructions = hart.instructions_retired();
     stats->seconds = seconds;

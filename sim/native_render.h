@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "firmware/common/traverse.h"
-#include "firmware/kernels/frame_abi.h"
+#include "firmware/abi/frame_abi.h"
 #include "scenes/scene_image.h"
 
 namespace strata::sim {

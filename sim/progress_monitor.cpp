@@ -14,8 +14,8 @@ void (*g_previous_handler)(int) = SIG_DFL;
 }  // namespace
 
 ProgressMonitor::ProgressMonitor(sc_core::sc_module_name name, const chip::Chip& chip, uint64_t interval,
-                                 bool show)
-    : sc_core::sc_module(name), chip_(chip), interval_(interval > 0 ? interval : 1), show_(show) {
+                                 bool show, bool terminal)
+    : sc_core::sc_module(name), chip_(chip), interval_(interval > 0 ? interval : 1), show_(show), terminal_(terminal) {
   SC_THREAD(run);
 }
 
@@ -35,10 +35,11 @@ void ProgressMonitor::print(bool final) {
   const double eta = fraction > 0 ? wall / fraction - wall : 0.0;
   const double mcycles = sc_core::sc_time_stamp().to_seconds() * chip_.config().clock_ghz * 1e3;
   std::fprintf(stderr,
-               "\rprogress: %u/%u pixels (%.1f%%), %.3f M cycles simulated, %.2f M simulated instructions/s, "
+               "%sprogress: %u/%u pixels (%.1f%%), %.3f M cycles simulated, %.2f M simulated instructions/s, "
                "%.0f s elapsed, ETA %.0f s   %s",
-               done, total, 100.0 * fraction, mcycles, wall > 0 ? double(chip_.instructions()) / wall * 1e-6 : 0.0,
-               wall, eta, final ? "\n" : "");
+               terminal_ ? "\r" : "", done, total, 100.0 * fraction, mcycles,
+               wall > 0 ? double(chip_.instructions()) / wall * 1e-6 : 0.0, wall, eta,
+               final || !terminal_ ? "\n" : "");
   std::fflush(stderr);
 }
 

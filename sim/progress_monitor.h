@@ -16,7 +16,9 @@ namespace strata::sim {
 class ProgressMonitor : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(ProgressMonitor);
-  ProgressMonitor(sc_core::sc_module_name name, const chip::Chip& chip, uint64_t interval_cycles, bool show);
+  // `show`: print progress lines; `terminal`: rewrite one line (else one line per report).
+  ProgressMonitor(sc_core::sc_module_name name, const chip::Chip& chip, uint64_t interval_cycles, bool show,
+                  bool terminal = true);
 
   bool interrupted() const { return interrupted_; }
   // Installs the SIGINT handler for the lifetime of the monitor (restored afterwards).
@@ -30,6 +32,7 @@ class ProgressMonitor : public sc_core::sc_module {
   const chip::Chip& chip_;
   uint64_t interval_;
   bool show_;
+  bool terminal_;
   bool interrupted_ = false;
   std::chrono::steady_clock::time_point start_;
 };

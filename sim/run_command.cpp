@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <unistd.h>
 
 #include "model/chip/chip.h"
@@ -37,7 +38,23 @@ struct RunOptions {
   uint64_t vcd_window_cycles = 1000;
   uint64_t vcd_start = 0, vcd_end = ~uint64_t{0};
   bool check = false;
+  bool progress = false;  // progress lines even when stderr is not a terminal
+  std::vector<std::string> stats_detail;
 };
+
+// --stats-detail tm,l2-bank,channel | all | none: which instance arrays stats.json lists one by one.
+std::set<std::string> detail_axes(const std::vector<std::string>& asked) {
+  if (asked.empty()) return chip::FrameReport::default_detail();
+  std::set<std::string> axes;
+  for (const std::string& a : asked) {
+    if (a == "all") return chip::FrameReport::detail_axes();
+    if (a == "none") continue;
+    if (chip::FrameReport::detail_axes().count(a) == 0)
+      throw std::runtime_error("--stats-detail: unknown '" + a + "' (tm, l2-bank, channel, all or none)");
+    axes.insert(a);
+  }
+  return axes;
+}
 
 // The kernel each design runs (firmware/kernels/<name>_main.cpp).
 std::string kernel_for(const chip::ChipConfig& c) {
@@ -46,6 +63,7 @@ std::string kernel_for(const chip::ChipConfig& c) {
 }
 
 void run_frame(RunOptions o) {
+  const std::set<std::string> detail = detail_axes(o.stats_detail);
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
   chip::ChipConfig config = chip::load_chip_config(o.config_file, o.overrides);
@@ -76,7 +94,8 @@ void run_frame(RunOptions o) {
     vcd->set_time_unit(1, sc_core::SC_NS);
     chip.trace(vcd, memory::TraceWindow(o.vcd_window_cycles, o.vcd_start, o.vcd_end));
   }
-  ProgressMonitor progress("progress", chip, o.progress_cycles, isatty(STDERR_FILENO) != 0 && !o.quiet);
+  ProgressMonitor progress("progress", chip, o.progress_cycles, !o.quiet && (o.progress || isatty(STDERR_FILENO) != 0),
+                           isatty(STDERR_FILENO) != 0);
   progress.arm();
   const auto t0 = std::chrono::steady_clock::now();
   sc_core::sc_start();
@@ -86,19 +105,14 @@ void run_frame(RunOptions o) {
   const bool interrupted = progress.interrupted();
   if (!chip.finished() && !interrupted) throw std::runtime_error("simulation failed: " + chip.error());
 
-  nlohmann::json report = chip::chip_report(chip, wall);
-  if (interrupted) {
-    report["interrupted"] = true;
-    report["frame"]["pixels_done"] = chip.pixels_done();
-    report["frame"]["frames_per_second"] = nullptr;  // no frame was finished
-  }
+  const chip::FrameReport report(chip, wall, interrupted);
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
   const std::vector<kernels::Pixel> image = chip.framebuffer();
   write_exr(dir / "image.exr", o.settings.width, o.settings.height, image);
   write_png_preview(dir / "image.png", o.settings.width, o.settings.height, image);
-  std::ofstream(dir / "stats.json") << report.dump(2) << "\n";
-  std::printf("%s", chip::summary_text(report).c_str());
+  std::ofstream(dir / "stats.json") << report.to_json(detail).dump(2) << "\n";
+  std::printf("%s", report.summary().c_str());
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
 
@@ -139,6 +153,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--progress-cycles", opts->progress_cycles, "simulated cycles between progress lines")
       ->capture_default_str();
   cmd->add_flag("--quiet", opts->quiet, "no progress lines");
+  cmd->add_flag("--progress", opts->progress, "progress lines even when stderr is not a terminal (one per line)");
+  cmd->add_option("--stats-detail", opts->stats_detail,
+                  "list instance arrays one by one in stats.json: tm, l2-bank, channel, all, none (default: channel)")
+      ->delimiter(',');
   cmd->add_flag("--check", opts->check, "also render with the native twin and require identical results");
   cmd->add_option("--cache-dir", opts->source.cache_dir, "scene image cache");
   cmd->add_flag("--no-cache", opts->source.no_cache, "always build the scene image");

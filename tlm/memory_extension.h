@@ -8,6 +8,9 @@
 
 #include <cstdint>
 
+#include "firmware/abi/strata_isa.h"
+#include "tlm/data_class.h"
+
 namespace strata::transport {
 
 enum class AccessClass : uint8_t {
@@ -28,7 +31,7 @@ enum class StreamStatus : uint8_t { kOk, kFull, kEmpty, kBadRequest };
 // The level that answered a load: lets tests and statistics see where a latency came from.
 enum class ServedBy : uint8_t { kNone, kL1, kL1Merged, kL2, kL2Merged, kDram, kStream, kSink };
 
-constexpr uint32_t kNoTreelet = 0xFFFFFFFFu;
+constexpr uint32_t kNoTreelet = STRATA_NO_TREELET;  // the firmware ABI's sentinel
 
 struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
   // Request.
@@ -44,6 +47,8 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
   // and caches) but count nothing, so the statistics hold the measured parts only.
   bool uncounted = false;
   uint32_t treelet = kNoTreelet;
+  // What the addressed bytes hold, for the traffic-by-data statistics (data_class.h).
+  DataClass data = DataClass::kOther;
   // Response.
   StreamStatus stream_status = StreamStatus::kOk;
   uint32_t result = 0;
@@ -62,6 +67,25 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
 
 // Whether a target counts this access in its statistics (plain TLM payloads: always).
 inline bool counts(const MemoryExtension* ext) { return ext == nullptr || !(ext->functional || ext->uncounted); }
+
+// A module's counters come in two copies: those the statistics report, and those of the
+// accesses sampled timing leaves out (warm-up and fast-forward), which are still counted so
+// the code path is the same. `of(ext)` picks the copy for one access.
+template <class Counters>
+struct CountedPair {
+  Counters counted;
+  Counters uncounted;
+  Counters& of(const MemoryExtension* ext) { return counts(ext) ? counted : uncounted; }
+};
+
+// The data class of an access an initiator did not classify: fetches hold instructions and
+// stream pushes and pops move rays; anything else is unknown.
+constexpr DataClass default_data_class(AccessClass a) {
+  return a == AccessClass::kInstructionFetch ? DataClass::kInstructions
+         : is_stream_access(a)              ? DataClass::kRays
+                                            : DataClass::kOther;
+}
+inline DataClass data_class_of(const MemoryExtension* ext) { return ext ? ext->data : DataClass::kOther; }
 
 // The access class of a payload; plain TLM initiators without the extension are data accesses.
 inline AccessClass access_class_of(const tlm::tlm_generic_payload& gp, const MemoryExtension* ext) {

@@ -2,14 +2,6 @@
 
 namespace strata::transport {
 
-const char* to_string(TimingMode mode) {
-  switch (mode) {
-    case TimingMode::kPrecise: return "precise";
-    case TimingMode::kSampled: return "sampled";
-    default: return "loosely-timed";
-  }
-}
-
 namespace {
 sc_core::sc_time quantum_of(const InitiatorConfig& c) {
   const Clock clock;

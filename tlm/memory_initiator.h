@@ -18,6 +18,7 @@
 #include "tlm/memory_extension.h"
 #include "tlm/payload_pool.h"
 #include "tlm/quantum_keeper.h"
+#include "tlm/timing_mode.h"
 
 #include <systemc>
 #include <tlm>
@@ -27,8 +28,6 @@
 
 namespace strata::transport {
 
-enum class TimingMode : uint8_t { kLooselyTimed, kPrecise, kSampled };
-const char* to_string(TimingMode mode);
 
 struct InitiatorConfig {
   TimingMode mode = TimingMode::kLooselyTimed;

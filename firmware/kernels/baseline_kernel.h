@@ -12,8 +12,6 @@
 
 namespace strata::kernels {
 
-constexpr uint32_t kPixelCounterRegister = 0;  // global register handing out pixels
-
 struct KernelContext {
   SceneView scene;
   const FrameParams* frame;

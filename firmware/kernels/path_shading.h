@@ -9,7 +9,7 @@
 
 #include "firmware/common/ray_offset.h"
 #include "firmware/common/traverse.h"
-#include "firmware/kernels/frame_abi.h"
+#include "firmware/abi/frame_abi.h"
 #include "firmware/kernels/sampling.h"
 #include "firmware/kernels/scene_view.h"
 

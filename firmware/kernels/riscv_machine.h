@@ -1,8 +1,8 @@
 // The STRaTA intrinsics as the kernels' Machine policy, on the thread processors.
 #pragma once
 
-#include "firmware/common/strata_isa.h"
-#include "firmware/kernels/boot_block.h"
+#include "firmware/abi/strata_isa.h"
+#include "firmware/abi/boot_block.h"
 #include "firmware/kernels/baseline_kernel.h"
 #include "firmware/kernels/stream_ray.h"
 #include "firmware/kernels/streams_kernel.h"

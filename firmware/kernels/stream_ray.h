@@ -7,7 +7,7 @@
 #include <stdint.h>
 
 #include "firmware/common/traverse.h"
-#include "firmware/kernels/frame_abi.h"
+#include "firmware/abi/frame_abi.h"
 
 namespace strata::kernels {
 

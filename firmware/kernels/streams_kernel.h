@@ -15,14 +15,13 @@
 // pipeline mode for the kind of treelet a TP works on.
 #pragma once
 
+#include "firmware/abi/strata_isa.h"
 #include "firmware/kernels/baseline_kernel.h"
 #include "firmware/kernels/stream_ray.h"
 
 namespace strata::kernels {
 
-constexpr uint32_t kPixelsDoneRegister = 1;  // pixels whose every sample is finished
-constexpr uint32_t kFillSlotRegister = 2;    // path slots handed out by the initial fill
-constexpr uint32_t kNoStreamTreelet = 0xFFFFFFFFu;
+constexpr uint32_t kNoStreamTreelet = STRATA_NO_TREELET;
 
 // One path in flight: what its rays do not carry.
 struct PathRecord {
@@ -32,6 +31,7 @@ struct PathRecord {
   Vec3f sum;  // this pixel's finished samples
   uint32_t pixel, sample, has_bounce, pad;
 };
+static_assert(sizeof(PathRecord) == kPathRecordBytes, "PathRecord is the size the platform reserves (frame_abi.h)");
 
 struct StreamsContext {
   KernelContext kernel;

@@ -4,7 +4,7 @@
  * to its local memory); only a zero sp falls back to the linker script's stack.
  * main's return value is written to tohost as (value << 1) | 1, the HTIF exit convention;
  * a platform that ignores tohost sees strata.halt right after. */
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
   .section .text.init, "ax", @progbits
   .globl _start

@@ -1,6 +1,6 @@
 /* Ends with strata.halt instead of returning, as a thread on the chip does. */
 #include "strata_runtime.h"
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 volatile uint32_t result;
 

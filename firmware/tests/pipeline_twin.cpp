@@ -4,7 +4,7 @@
 #include "strata_runtime.h"
 
 #include "firmware/common/intersect.h"
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 namespace {
 

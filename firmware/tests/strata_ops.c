@@ -1,7 +1,7 @@
 /* The STRaTA extension through its intrinsics, against the ISS's functional hook (one TP,
  * one TM): ids, global registers, stream memory and both fused pipelines. */
 #include "strata_runtime.h"
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 static strata_stream_ray make_ray(uint32_t tag) {
   strata_stream_ray r;

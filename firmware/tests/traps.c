@@ -1,7 +1,7 @@
 /* Machine-mode traps: a handler installed in mtvec sees mcause, mepc and mtval of each
  * faulting instruction, skips it and returns with mret. Also CSR basics. */
 #include "strata_runtime.h"
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 static volatile uint32_t seen_cause, seen_epc, seen_tval, seen_mstatus, trap_count;
 

@@ -4,14 +4,11 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "firmware/kernels/boot_block.h"
-#include "firmware/kernels/streams_kernel.h"
+#include "firmware/abi/boot_block.h"
 #include "model/memory/stream_sram.h"
 
 namespace strata::chip {
 namespace {
-
-uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
 
 // The predecoded code of the kernel's executable segments, shared by every TP of the chip.
 iss::CodeImage build_code(const iss::ElfImage& elf) {
@@ -32,7 +29,7 @@ iss::CodeImage build_code(const iss::ElfImage& elf) {
 }  // namespace
 
 Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameInputs& inputs)
-    : sc_core::sc_module(name), config_(config) {
+    : sc_core::sc_module(name), config_(config), stats_("chip", "One simulated frame on the chip.") {
   const iss::ElfImage elf = iss::load_elf(inputs.kernel_elf);
   code_ = build_code(elf);
   load(inputs, elf);
@@ -54,7 +51,9 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.tohost = elf.symbol("tohost").value_or(0);
   env.guest_low = 0x1000;  // the first page stays unmapped, so a null pointer faults
   env.guest_high = layout_.end;
-  env.stacks_base = layout_.stacks;
+  env.stacks_base = static_cast<uint32_t>(layout_.stacks);
+  env.data_classes = &data_classes_;
+  env.report_cycle = &report_cycle_;
   for (uint32_t t = 0; t < config_.tms; ++t) {
     const std::string n = std::to_string(t);
     l1d_.push_back(std::make_unique<memory::L1DataCache>(("l1d_" + n).c_str(), config_.l1d, backing_));
@@ -66,45 +65,47 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     l1i_.back()->downstream.bind(interconnect_->tm_side);
     tms_.back()->stream_port.bind(interconnect_->tm_side);
   }
+  register_stats();
 }
 
 Chip::~Chip() = default;
 
 void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
-  uint64_t elf_end = 0;
+  uint64_t code_begin = UINT64_MAX, elf_end = 0;
   for (const iss::ElfSegment& s : elf.segments) {
     if (!s.bytes.empty()) backing_.write(s.vaddr, s.bytes.data(), s.bytes.size());
+    code_begin = std::min<uint64_t>(code_begin, s.vaddr);
     elf_end = std::max<uint64_t>(elf_end, uint64_t{s.vaddr} + s.memsz);
   }
   const auto boot_symbol = elf.symbol(kernels::kBootBlockSymbol);
   if (!boot_symbol)
     throw std::runtime_error(elf.path + ": no '" + std::string(kernels::kBootBlockSymbol) + "' symbol: not a render kernel");
-  const uint64_t treelet = std::max<uint64_t>(in.treelet_bytes, 64);
-  GuestLayout& g = layout_;
-  g.stacks = static_cast<uint32_t>(align_up(elf_end, 1 << 16));
-  const uint64_t stacks_end = uint64_t{g.stacks} + uint64_t{config_.threads()} * config_.tp_stack_bytes;
-  const uint64_t image = align_up(stacks_end, treelet);
-  const uint64_t frame = align_up(image + in.scene_image_bytes, 64);
+  if (in.scene_image_bytes < sizeof(SceneImageHeader))
+    throw std::runtime_error("chip: the scene image is smaller than its header");
   pixels_ = in.frame.width * in.frame.height;
-  const uint64_t framebuffer = align_up(frame + sizeof(kernels::FrameParams), 64);
-  const uint64_t counters = align_up(framebuffer + uint64_t{pixels_} * sizeof(kernels::Pixel), 64);
-  const uint64_t paths = align_up(counters + uint64_t{config_.threads()} * sizeof(kernels::RayCounters), 64);
-  // Streaming kernels keep one path record per ray the stream memory can hold.
-  const uint32_t path_slots =
+  // Per-TP stacks sit above the kernel, then the frame's data (guest_layout.h). Streaming
+  // kernels keep one path record per ray the stream memory can hold.
+  const uint64_t stacks = align_up(elf_end, 1 << 16);
+  const uint64_t stacks_end = stacks + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+  FrameFootprint f;
+  f.scene_image_bytes = in.scene_image_bytes;
+  f.treelet_bytes = in.treelet_bytes;
+  f.pixels = pixels_;
+  f.threads = config_.threads();
+  f.path_slots =
       config_.design.streams ? std::min(memory::make_stream_layout(config_.stream).capacity, std::max(pixels_, 1u)) : 0u;
-  g.end = align_up(paths + uint64_t{path_slots} * sizeof(kernels::PathRecord), 64);
-  if (g.end > 0xFFFFFFFFull)
-    throw std::runtime_error("chip: firmware, stacks, scene image and frame need " + std::to_string(g.end) +
-                             " bytes, more than the 32-bit guest address space");
-  g.scene_image = static_cast<uint32_t>(image);
-  g.frame = static_cast<uint32_t>(frame);
-  g.framebuffer = static_cast<uint32_t>(framebuffer);
-  g.counters = static_cast<uint32_t>(counters);
-  backing_.write(g.scene_image, in.scene_image, in.scene_image_bytes);
-  backing_.write(g.frame, &in.frame, sizeof in.frame);
-  g.path_table = static_cast<uint32_t>(paths);
-  const kernels::BootBlock boot{g.frame, g.scene_image, g.framebuffer, g.counters, g.path_table, path_slots, {0, 0}};
+  layout_ = plan_frame_layout(stacks_end, f);
+  layout_.code_begin = code_begin;
+  layout_.code_end = elf_end;
+  layout_.stacks = stacks;
+  layout_.stacks_end = stacks_end;
+  backing_.write(layout_.scene_image, in.scene_image, in.scene_image_bytes);
+  backing_.write(layout_.frame, &in.frame, sizeof in.frame);
+  const kernels::BootBlock boot = boot_block(layout_);
   backing_.write(*boot_symbol, &boot, sizeof boot);
+  SceneImageHeader header;
+  std::memcpy(&header, in.scene_image, sizeof header);
+  data_classes_ = data_class_map(layout_, header);
 }
 
 void Chip::trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window) {

@@ -11,9 +11,10 @@
 
 #include <systemc>
 
-#include "firmware/kernels/frame_abi.h"
+#include "firmware/abi/frame_abi.h"
 #include "model/chip/chip_config.h"
 #include "model/chip/global_registers.h"
+#include "model/chip/guest_layout.h"
 #include "model/chip/thread_multiprocessor.h"
 #include "model/iss/code_image.h"
 #include "model/iss/elf_loader.h"
@@ -24,6 +25,8 @@
 #include "model/memory/l2_cache.h"
 #include "model/memory/sparse_memory.h"
 #include "model/memory/stream_memory.h"
+#include "model/stats/stat_group.h"
+#include "tlm/data_class.h"
 
 namespace strata::chip {
 
@@ -34,12 +37,6 @@ struct FrameInputs {
   uint64_t scene_image_bytes = 0;
   uint32_t treelet_bytes = 0;  // the image is placed at an address aligned to it
   kernels::FrameParams frame{};
-};
-
-// Guest addresses of what the chip loaded (see Chip::Chip).
-struct GuestLayout {
-  uint32_t stacks = 0, scene_image = 0, frame = 0, framebuffer = 0, counters = 0, path_table = 0;
-  uint64_t end = 0;
 };
 
 class Chip : public sc_core::sc_module {
@@ -75,15 +72,22 @@ class Chip : public sc_core::sc_module {
   const memory::Dram& dram() const { return *dram_; }
   const memory::Interconnect& interconnect() const { return *interconnect_; }
   const memory::SparseMemory& backing() const { return backing_; }
+  const transport::DataClassMap& data_classes() const { return data_classes_; }
+
+  // The statistics tree of the whole chip (docs/statistics.md): frame, rays, the TMs'
+  // instructions and XUs, every memory level, energy and the fidelity sentinels.
+  const stats::Group& statistics() const { return stats_; }
 
  private:
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);
+  void register_stats();  // chip_statistics.cpp
 
   ChipConfig config_;
   memory::SparseMemory backing_;
   GlobalRegisters globals_;
   iss::CodeImage code_;
   GuestLayout layout_;
+  transport::DataClassMap data_classes_;
   uint32_t pixels_ = 0;
   std::unique_ptr<memory::Dram> dram_;
   std::unique_ptr<memory::L2Cache> l2_;
@@ -92,6 +96,13 @@ class Chip : public sc_core::sc_module {
   std::vector<std::unique_ptr<memory::L1DataCache>> l1d_;
   std::vector<std::unique_ptr<memory::L1InstructionCache>> l1i_;
   std::vector<std::unique_ptr<ThreadMultiprocessor>> tms_;
+
+  // Statistics: the tree, the groups the chip owns, and what they read at a snapshot.
+  stats::Group stats_;
+  std::vector<std::unique_ptr<stats::Group>> stat_groups_;
+  transport::Cycle report_cycle_ = 0;
+  kernels::RayCounters ray_totals_{};
+  uint64_t ray_total_ = 0;
 };
 
 }  // namespace strata::chip

@@ -12,7 +12,7 @@
 #include "model/chip/config_binder.h"
 #include "model/memory/config.h"
 #include "model/tm/tm_config.h"
-#include "tlm/memory_initiator.h"
+#include "tlm/timing_mode.h"
 
 namespace strata::chip {
 

@@ -1,18 +1,51 @@
-// The statistics of one simulated frame, as JSON (every number named with its unit, and the
-// timing mode it came from), and a short readable summary of it.
+// The statistics of one simulated frame: a snapshot of the chip's statistics tree, taken
+// when the simulation has stopped, extrapolated in sampled timing, with the simulator's own
+// speed added. stats.json and the terminal summary are both written from it, never from each
+// other; every number names its unit (the tree's) and the timing mode it came from.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include <set>
 #include <string>
 
 #include "model/chip/chip.h"
+#include "model/stats/stat_values.h"
 
 namespace strata::chip {
 
-// `wall_seconds`: host time of the simulation itself (for the simulator's own speed).
-nlohmann::json chip_report(const Chip& chip, double wall_seconds);
+class FrameReport {
+ public:
+  // `wall_seconds`: host time of the simulation itself (for the simulator's own speed);
+  // `interrupted`: the run was stopped before the frame finished (Ctrl-C). The chip must
+  // outlive the report.
+  FrameReport(const Chip& chip, double wall_seconds, bool interrupted = false);
+  FrameReport(const FrameReport&) = delete;
+  FrameReport& operator=(const FrameReport&) = delete;
 
-std::string summary_text(const nlohmann::json& report);
+  const stats::Values& values() const { return values_; }
+  bool interrupted() const { return interrupted_; }
+
+  // stats.json: the design and timing, every statistic (instance arrays listed one by one for
+  // the axes named: "tm", "l2-bank", "channel"), the units of each, and the config.
+  nlohmann::json to_json(const std::set<std::string>& detail = default_detail()) const;
+  // A one-screen summary, each line tagged with the timing mode; warns when a fidelity
+  // sentinel is not 0.
+  std::string summary() const;
+
+  static std::set<std::string> default_detail() { return {"channel"}; }
+  static const std::set<std::string>& detail_axes();  // every axis the tree has
+
+ private:
+  const Chip& chip_;
+  double wall_;
+  bool interrupted_;
+  uint64_t resident_bytes_;
+  stats::Group simulation_;
+  stats::Values values_;
+};
+
+// The same JSON, for callers that only need that (tests, tools).
+nlohmann::json chip_report(const Chip& chip, double wall_seconds);
 
 }  // namespace strata::chip

@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 namespace strata::chip {
 

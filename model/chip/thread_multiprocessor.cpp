@@ -34,7 +34,10 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       sampled_(env.config->timing.mode == transport::TimingMode::kSampled),
       period_(env.config->timing.sample_period_cycles),
       detail_(env.config->timing.sample_detail_cycles),
-      warmup_(env.config->timing.sample_warmup_cycles) {
+      warmup_(env.config->timing.sample_warmup_cycles),
+      instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
+      xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
+                stats::Basis::kTimedInstructions) {
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
@@ -44,6 +47,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
     t.hart.set_x(2, t.stack_hi);  // crt0 keeps a preset sp
     if (env.tohost) t.hart.set_tohost(env.tohost);
   }
+  register_stats();
   tr_mode_ = trace_.add_level("pipeline_mode");
   tr_instructions_ = trace_.add_rate("instructions");
   tr_box_ = trace_.add_rate("box_tests");
@@ -94,7 +98,9 @@ void ThreadMultiprocessor::sync_to(Cycle t) {
   if (t > global_cycle_ && (precise || t - global_cycle_ >= config_.timing.quantum_cycles)) {
     sc_core::wait(clock_.delay_until(t));
     global_cycle_ = clock_.now();
-    xus_.retire_before(global_cycle_);
+    // The crossbar may forget what lies before every TP of this TM: the TP being stepped
+    // may be up to the TP slack ahead of the others (which can still ask for those cycles).
+    xus_.retire_before(global_cycle_ > burst_slack_ ? global_cycle_ - burst_slack_ : 0);
   }
 }
 
@@ -164,6 +170,8 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
   transport::PooledPayload gp(pool_);
   transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only, functional_,
                             !counting());
+  if ((access == AccessClass::kDataLoad || access == AccessClass::kDataStore) && env_.data_classes)
+    gp.ext().data = env_.data_classes->of(addr);
   const MemoryExtension& ext = gp.ext();
   sc_core::sc_time delay = clock_.delay_until(at);
   port->b_transport(*gp, delay);
@@ -359,7 +367,6 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       hook_ready_ = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, request_cycle_, false,
                              transport::kNoTreelet, tp, &ext);
       result.dest[0] = ext.result;
-      current_treelet_ = ext.result;
       if (trace_.enabled())
         trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), global_cycle_);
       break;

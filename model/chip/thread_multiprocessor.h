@@ -18,6 +18,7 @@
 // local stack memory, the stream memory, or the global registers).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@
 #include "model/iss/hart.h"
 #include "model/memory/sparse_memory.h"
 #include "model/memory/window_trace.h"
+#include "model/stats/stat_group.h"
 #include "model/tm/tp_timing.h"
 #include "model/tm/xu_crossbar.h"
 #include "tlm/clock.h"
@@ -51,6 +53,9 @@ struct TmEnvironment {
   uint32_t guest_low = 0;    // lowest valid data address (above the null page)
   uint64_t guest_high = 0;   // one past the highest
   uint32_t stacks_base = 0;  // thread t's stack: [stacks_base + t * stack, + stack)
+  const transport::DataClassMap* data_classes = nullptr;  // what each data address holds (may be null)
+  // The cycle statistics are taken at (the frame's end): the XUs count each mode's cycles up to it.
+  const transport::Cycle* report_cycle = nullptr;
 };
 
 struct TmCounters {
@@ -84,6 +89,9 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
 
   const TmCounters& counters() const { return counters_; }
   const tm::XuCrossbar& xus() const { return xus_; }
+  // This TM's statistics groups: its TPs' instructions and stalls, and its XU crossbar.
+  const stats::Group& instruction_stats() const { return instruction_stats_; }
+  const stats::Group& xu_stats() const { return xu_stats_; }
   tm::TpStats tp_stats() const;  // summed over the TM's TPs
   iss::Counters iss_counters() const;
   bool failed() const { return !error_.empty(); }
@@ -115,6 +123,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
                             transport::Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                             transport::MemoryExtension* result);
   void fail(const Tp& tp, const std::string& what);
+  void register_stats();  // tm_statistics.cpp
+  void refresh_stats();
 
   iss::HookResult execute(const iss::HookCall& call) override;
   iss::HookResult execute_op(const iss::HookCall& call);
@@ -158,7 +168,14 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   transport::Cycle request_cycle_ = 0;
   transport::Cycle hook_ready_ = 0;
   bool hook_timed_ = false;
-  uint32_t current_treelet_ = 0xFFFFFFFFu;
+
+  // Statistics: sums over the TPs and the crossbar's counters, refreshed before a snapshot.
+  iss::Counters iss_totals_;
+  std::array<uint64_t, tm::kStallCauseCount> stall_totals_{};
+  tm::XuStats xu_totals_;
+  stats::Group instruction_stats_;
+  stats::Group xu_stats_;
+  std::vector<std::unique_ptr<stats::Group>> stat_groups_;  // the sub-groups of both
 
   memory::WindowTrace trace_;
   std::size_t tr_mode_ = 0, tr_instructions_ = 0, tr_box_ = 0, tr_triangle_ = 0, tr_treelet_ = 0;

@@ -1,6 +1,6 @@
 #include "model/iss/decoder.h"
 
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 namespace strata::iss {
 namespace {

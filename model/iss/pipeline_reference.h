@@ -4,7 +4,7 @@
 #pragma once
 
 #include "firmware/common/intersect.h"
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 namespace strata::iss {
 

@@ -1,6 +1,6 @@
 #include "model/iss/strata_hook.h"
 
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 
 namespace strata::iss {
 

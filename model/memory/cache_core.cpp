@@ -13,6 +13,7 @@ CacheCore::CacheCore(const CacheGeometry& g)
   shadow_until_.assign(sets_, 0);
   lru_.assign(lines, 0);
   dirty_.assign(lines, 0);
+  data_.assign(lines, transport::DataClass::kOther);
   bank_calendars_.reserve(banks_);
   for (uint32_t b = 0; b < banks_; ++b) bank_calendars_.emplace_back(1, g.horizon_cycles);
 }
@@ -44,7 +45,8 @@ CacheCore::Lookup CacheCore::classify(uint32_t set, uint64_t line, Cycle slot, C
   return {Outcome::kTimeShifted, found, done};
 }
 
-void CacheCore::install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, Cycle ready, bool dirty) {
+void CacheCore::install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, Cycle ready, bool dirty,
+                        transport::DataClass data) {
   const uint32_t i = set * ways_ + way;
   if (tag_[i] != 0) {
     shadow_line_[set] = tag_[i];
@@ -54,6 +56,7 @@ void CacheCore::install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, C
   ready_[i] = ready;
   requested_[i] = slot;
   dirty_[i] = dirty ? 1 : 0;
+  data_[i] = data;
   lru_[i] = ++use_clock_;
 }
 

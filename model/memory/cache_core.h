@@ -19,6 +19,7 @@
 #pragma once
 
 #include "tlm/clock.h"
+#include "tlm/data_class.h"
 #include "tlm/reservation_calendar.h"
 
 #include <cstdint>
@@ -76,14 +77,17 @@ class CacheCore {
   // An invalid way if there is one, else the least recently used.
   uint32_t victim(uint32_t set) const;
   void touch(uint32_t set, uint32_t way) { lru_[set * ways_ + way] = ++use_clock_; }
-  // `slot`: bank slot of the access that requested the line (and evicted the old one).
-  void install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, Cycle ready, bool dirty);
+  // `slot`: bank slot of the access that requested the line (and evicted the old one);
+  // `data`: what the line holds, so that its write-back is counted as that.
+  void install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, Cycle ready, bool dirty,
+               transport::DataClass data);
 
   bool valid(uint32_t set, uint32_t way) const { return tag_[set * ways_ + way] != 0; }
   uint64_t line_at(uint32_t set, uint32_t way) const { return tag_[set * ways_ + way] - 1; }
   Cycle ready(uint32_t set, uint32_t way) const { return ready_[set * ways_ + way]; }
   bool dirty(uint32_t set, uint32_t way) const { return dirty_[set * ways_ + way] != 0; }
   void set_dirty(uint32_t set, uint32_t way) { dirty_[set * ways_ + way] = 1; }
+  transport::DataClass data_class(uint32_t set, uint32_t way) const { return data_[set * ways_ + way]; }
 
   uint32_t sets() const { return sets_; }
   uint32_t ways() const { return ways_; }
@@ -105,6 +109,7 @@ class CacheCore {
   std::vector<Cycle> shadow_until_;    // per set: slot of the access that evicted it
   std::vector<uint64_t> lru_;
   std::vector<uint8_t> dirty_;
+  std::vector<transport::DataClass> data_;
   uint64_t use_clock_ = 0;  // LRU order is arrival order, which is what the tags see
   std::vector<transport::ReservationCalendar> bank_calendars_;
 };

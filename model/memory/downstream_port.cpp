@@ -3,7 +3,7 @@
 namespace strata::memory {
 
 DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint32_t bytes, transport::Cycle at,
-                                      const transport::MemoryExtension* origin) {
+                                      const transport::MemoryExtension* origin, transport::DataClass data) {
   transport::PooledPayload p(pool_);
   p->set_command(cmd);
   p->set_address(addr);
@@ -18,6 +18,7 @@ DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint3
   }
   ext.access = cmd == tlm::TLM_WRITE_COMMAND ? transport::AccessClass::kDataStore : transport::AccessClass::kDataLoad;
   ext.timing_only = true;
+  ext.data = data;
 
   sc_core::sc_time delay = clock_.delay_until(at);
   socket_->b_transport(*p, delay);

@@ -26,9 +26,10 @@ class DownstreamPort {
   DownstreamPort(tlm::tlm_initiator_socket<>& socket, uint32_t max_bytes)
       : socket_(socket), scratch_(max_bytes, 0) {}
 
-  // `origin` (may be null) names the thread and TM the request is made for.
+  // `origin` (may be null) names the thread and TM the request is made for; `data` is what
+  // the line holds.
   DownstreamResult send(tlm::tlm_command cmd, uint64_t addr, uint32_t bytes, transport::Cycle at,
-                        const transport::MemoryExtension* origin);
+                        const transport::MemoryExtension* origin, transport::DataClass data);
 
   uint64_t requests() const { return requests_; }
   uint64_t bytes() const { return bytes_; }

@@ -1,6 +1,9 @@
 #include "model/memory/dram.h"
 
+#include <cmath>
 #include <string>
+
+#include "model/stats/stat_values.h"
 
 namespace strata::memory {
 
@@ -8,7 +11,10 @@ using transport::Cycle;
 using transport::MemoryExtension;
 
 Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory& backing)
-    : sc_core::sc_module(name), config_((config.validate(), config)), backing_(backing), stats_(basename()) {
+    : sc_core::sc_module(name),
+      config_((config.validate(), config)),
+      backing_(backing),
+      stats_("dram", "Off-chip DRAM: channels interleaved by address, behind the L2.", stats::Basis::kDataOps) {
   target.register_b_transport(this, &Dram::b_transport);
   while ((1u << interleave_shift_) != config_.interleave_bytes) ++interleave_shift_;
   buses_.reserve(config_.channels);
@@ -16,21 +22,51 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
     buses_.emplace_back(config_.channel_bytes_per_cycle(), config_.calendar_horizon_cycles);
   channels_.resize(config_.channels);  // never resized again: the stats point into it
 
-  Counters& t = counters_;
-  stats_.add({{"accesses", &t.accesses}, {"requests", &t.requests}, {"bytes_read", &t.bytes_read},
-              {"bytes_written", &t.bytes_written}});
-  stats_.add("energy_nj", &t.energy_nj);
+  using stats::Unit;
+  const Counters& t = counters_;
+  stats::Group& g = stats_;
+  g.count("accesses", &t.accesses, Unit::kCount, "Bursts of up to burst_bytes; DRAM energy is per burst.");
+  g.count("requests", &t.requests, Unit::kCount, "Requests from the L2 (line fills and write-backs).");
+  g.count("bytes_read", &t.bytes_read, Unit::kBytes, "Bytes read.");
+  g.count("bytes_written", &t.bytes_written, Unit::kBytes, "Bytes written.");
+  g.count("energy_nj", &t.energy_nj, Unit::kNanojoules, "Energy of the bursts.");
+  g.derived("bytes", Unit::kBytes, "bytes_read + bytes_written.",
+            [](const stats::Scope& s) { return s.self().number("bytes_read") + s.self().number("bytes_written"); },
+            true);
+  g.derived("bandwidth_gb_per_s", Unit::kGigabytesPerSecond, "Bytes over the simulated frame time.",
+            [](const stats::Scope& s) {
+              const stats::Values& root = s.root();
+              if (!root.has("frame.seconds") || root.number("frame.seconds") <= 0) return 0.0;
+              return s.self().number("bytes") / root.number("frame.seconds") * 1e-9;
+            });
+  const double per_cycle = config_.bytes_per_cycle;
+  g.derived("peak_gb_per_s", Unit::kGigabytesPerSecond, "The channels' peak: bytes_per_cycle at the chip clock.",
+            [per_cycle](const stats::Scope& s) {
+              const stats::Values& root = s.root();
+              return root.has("chip.clock_ghz") ? per_cycle * root.number("chip.clock_ghz") : std::nan("");
+            });
+  g.level("calendar_overflow_bookings", [this] { return overflow_bookings(); }, Unit::kCount,
+          "Fidelity: bus bookings beyond the calendar horizon, served late in arrival order; must be 0.");
+  by_data_stats_ = std::make_unique<DataTrafficStats>(t.by_data, false, "Bursts of data of this class.",
+                                                      "Bytes of this class moved.");
+  g.child(&by_data_stats_->group());
+  std::vector<const stats::Group*> each;
   for (uint32_t c = 0; c < config_.channels; ++c) {
     ChannelCounters& k = channels_[c];
-    auto group = std::make_unique<StatGroup>("channel" + std::to_string(c));
-    group->add({{"accesses", &k.accesses}, {"requests", &k.requests}, {"bytes_read", &k.bytes_read},
-                {"bytes_written", &k.bytes_written}, {"queued_cycles", &k.queued_cycles}});
-    group->add("energy_nj", &k.energy_nj);
-    stats_.add_child(group.get());
+    auto group = std::make_unique<stats::Group>("channel" + std::to_string(c), "One DRAM channel.");
+    group->count("accesses", &k.accesses, Unit::kCount, "Bursts.");
+    group->count("requests", &k.requests, Unit::kCount, "Requests.");
+    group->count("bytes_read", &k.bytes_read, Unit::kBytes, "Bytes read.");
+    group->count("bytes_written", &k.bytes_written, Unit::kBytes, "Bytes written.");
+    group->count("queued_cycles", &k.queued_cycles, Unit::kCycles,
+                 "Cycles requests waited for the data bus beyond the unloaded latency.");
+    group->count("energy_nj", &k.energy_nj, Unit::kNanojoules, "Energy of the bursts.");
+    each.push_back(group.get());
     channel_stats_.push_back(std::move(group));
     tr_bandwidth_.push_back(trace_.add_rate("channel" + std::to_string(c) + ".bytes_per_cycle"));
     tr_depth_.push_back(trace_.add_level("channel" + std::to_string(c) + ".queue_cycles"));
   }
+  g.instances("channels", each, "channel", "DRAM channels", false);
 }
 
 void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
@@ -80,6 +116,9 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
     ++counters_.requests;
     (write ? counters_.bytes_written : counters_.bytes_read) += bytes;
     counters_.energy_nj += energy;
+    ClassTraffic& d = traffic(counters_.by_data, transport::data_class_of(ext));
+    d.accesses += bursts;
+    d.bytes += bytes;
   }
 
   if (trace_.enabled()) {

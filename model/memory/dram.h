@@ -6,8 +6,9 @@
 #pragma once
 
 #include "model/memory/config.h"
+#include "model/memory/data_traffic.h"
 #include "model/memory/sparse_memory.h"
-#include "model/memory/stats.h"
+#include "model/stats/stat_group.h"
 #include "model/memory/window_trace.h"
 #include "tlm/clock.h"
 #include "tlm/memory_extension.h"
@@ -36,6 +37,7 @@ class Dram : public sc_core::sc_module {
   struct Counters {
     uint64_t accesses = 0, requests = 0, bytes_read = 0, bytes_written = 0;
     double energy_nj = 0.0;
+    DataTraffic by_data{};  // requests and bytes by what they hold
   };
 
   Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory& backing);
@@ -45,7 +47,7 @@ class Dram : public sc_core::sc_module {
   }
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
-  const StatGroup& stats() const { return stats_; }
+  const stats::Group& stats() const { return stats_; }
   const DramConfig& config() const { return config_; }
   SparseMemory& backing() { return backing_; }
   uint64_t overflow_bookings() const;
@@ -62,8 +64,9 @@ class Dram : public sc_core::sc_module {
   std::vector<transport::ReservationCalendar> buses_;
   std::vector<ChannelCounters> channels_;
   Counters counters_;
-  StatGroup stats_;
-  std::vector<std::unique_ptr<StatGroup>> channel_stats_;
+  stats::Group stats_;
+  std::vector<std::unique_ptr<stats::Group>> channel_stats_;
+  std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;
   std::vector<std::size_t> tr_bandwidth_, tr_depth_;
 };

@@ -8,20 +8,40 @@ using transport::Cycle;
 using transport::MemoryExtension;
 
 Interconnect::Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config)
-    : sc_core::sc_module(name), config_((config.validate(), config)), stats_(basename()) {
+    : sc_core::sc_module(name),
+      config_((config.validate(), config)),
+      stats_("interconnect", "The crossbar between the TMs and the L2 banks and stream memory.", stats::Basis::kDataOps) {
   tm_side.register_b_transport(this, &Interconnect::b_transport);
   while ((1u << line_shift_) != config_.l2_line_bytes) ++line_shift_;
   tm_ports_.reserve(config_.tm_ports);
   for (uint32_t p = 0; p < config_.tm_ports; ++p) tm_ports_.emplace_back(1, config_.calendar_horizon_cycles);
   links_.reserve(config_.l2_banks + 1);
   for (uint32_t l = 0; l <= config_.l2_banks; ++l) links_.emplace_back(1, config_.calendar_horizon_cycles);
-  Counters& c = counters_;
-  stats_.add({{"transfers", &c.transfers}, {"bytes", &c.bytes}, {"l2_transfers", &c.l2_transfers},
-              {"stream_transfers", &c.stream_transfers}, {"port_conflicts", &c.port_conflicts},
-              {"link_conflicts", &c.link_conflicts}, {"conflict_cycles", &c.conflict_cycles}});
-  stats_.add("energy_nj", &c.energy_nj);
+  using stats::Unit;
+  const Counters& c = counters_.counted;
+  stats::Group& g = stats_;
+  g.count("transfers", &c.transfers, Unit::kCount, "Requests carried between the TMs and the L2 banks or stream memory.");
+  g.count("bytes", &c.bytes, Unit::kBytes, "Bytes those requests carried (data of loads, stores, fills, rays).");
+  g.count("l2_transfers", &c.l2_transfers, Unit::kCount, "Transfers to and from the L2.");
+  g.count("stream_transfers", &c.stream_transfers, Unit::kCount, "Transfers to and from the stream memory.");
+  g.count("port_conflicts", &c.port_conflicts, Unit::kCount, "Requests that found their TM port busy.");
+  g.count("link_conflicts", &c.link_conflicts, Unit::kCount, "Requests that found their bank's or the stream memory's link busy.");
+  g.count("conflict_cycles", &c.conflict_cycles, Unit::kCycles, "Cycles requests waited for ports and links.");
+  g.level("calendar_overflow_bookings", [this] { return overflow_bookings(); }, Unit::kCount,
+          "Fidelity: port and link bookings beyond the calendar horizon, served late; must be 0.");
+  g.count("energy_nj", &c.energy_nj, Unit::kNanojoules, "Energy of the transfers (0 unless transfer_energy_nj is set).");
+  by_data_stats_ = std::make_unique<DataTrafficStats>(c.by_data, false, "Transfers of data of this class.",
+                                                      "Bytes of this class carried.");
+  g.child(&by_data_stats_->group());
   tr_bytes_ = trace_.add_rate("bytes_per_cycle");
   tr_conflicts_ = trace_.add_rate("conflicts_per_cycle");
+}
+
+uint64_t Interconnect::overflow_bookings() const {
+  uint64_t n = 0;
+  for (const auto& p : tm_ports_) n += p.overflow_bookings();
+  for (const auto& l : links_) n += l.overflow_bookings();
+  return n;
 }
 
 void Interconnect::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
@@ -48,7 +68,7 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   transport::ReservationCalendar& link = links_[stream ? config_.l2_banks : bank_of(gp.get_address())];
   in.retire_before(now);
   link.retire_before(now);
-  Counters& c = transport::counts(ext) ? counters_ : uncounted_;  // sampled: warm-up and fast-forward
+  Counters& c = counters_.of(ext);  // sampled: warm-up and fast-forward go apart
   const Cycle granted = in.book(t, 1).first;
   if (granted > t) {
     ++c.port_conflicts;
@@ -81,6 +101,9 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   c.bytes += bytes;
   ++(stream ? c.stream_transfers : c.l2_transfers);
   c.energy_nj += config_.transfer_energy_nj * flits;
+  ClassTraffic& k = traffic(c.by_data, transport::data_class_of(ext));
+  ++k.accesses;
+  k.bytes += bytes;
   if (trace_.enabled()) {
     trace_.count(tr_bytes_, bytes, now);
     trace_.count(tr_conflicts_, granted > t ? 1 : 0, now);

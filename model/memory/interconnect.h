@@ -8,7 +8,8 @@
 #pragma once
 
 #include "model/memory/config.h"
-#include "model/memory/stats.h"
+#include "model/memory/data_traffic.h"
+#include "model/stats/stat_group.h"
 #include "model/memory/window_trace.h"
 #include "tlm/clock.h"
 #include "tlm/memory_extension.h"
@@ -19,6 +20,7 @@
 #include <tlm_utils/multi_passthrough_target_socket.h>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include <memory>
 #include <vector>
 
 namespace strata::memory {
@@ -36,6 +38,7 @@ class Interconnect : public sc_core::sc_module {
     uint64_t l2_transfers = 0, stream_transfers = 0;
     uint64_t port_conflicts = 0, link_conflicts = 0, conflict_cycles = 0;
     double energy_nj = 0.0;
+    DataTraffic by_data{};
   };
 
   Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config);
@@ -43,8 +46,9 @@ class Interconnect : public sc_core::sc_module {
   uint32_t bank_of(uint64_t addr) const {
     return static_cast<uint32_t>((addr >> line_shift_) & (config_.l2_banks - 1));
   }
-  const Counters& counters() const { return counters_; }
-  const StatGroup& stats() const { return stats_; }
+  const Counters& counters() const { return counters_.counted; }
+  const stats::Group& stats() const { return stats_; }
+  uint64_t overflow_bookings() const;
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
@@ -55,9 +59,9 @@ class Interconnect : public sc_core::sc_module {
   uint32_t line_shift_ = 0;
   std::vector<transport::ReservationCalendar> tm_ports_;
   std::vector<transport::ReservationCalendar> links_;  // L2 banks, then the stream memory
-  Counters counters_;
-  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
-  StatGroup stats_;
+  transport::CountedPair<Counters> counters_;
+  stats::Group stats_;
+  std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;
   std::size_t tr_bytes_, tr_conflicts_;
 };

@@ -9,13 +9,11 @@
 // The same code serves both timing modes; only the arrival order of requests differs.
 #pragma once
 
-#include "model/memory/cache_core.h"
+#include "model/memory/cache_path.h"
 #include "model/memory/config.h"
-#include "model/memory/downstream_port.h"
 #include "model/memory/sparse_memory.h"
-#include "model/memory/stats.h"
 #include "model/memory/window_trace.h"
-#include "tlm/clock.h"
+#include "model/stats/stat_group.h"
 
 #include <systemc>
 #include <tlm>
@@ -29,23 +27,13 @@ class L1DataCache : public sc_core::sc_module {
   tlm_utils::simple_target_socket<L1DataCache> target{"target"};              // from the TPs
   tlm_utils::simple_initiator_socket<L1DataCache> downstream{"downstream"};  // to the L2 side
 
-  struct Counters {
-    uint64_t accesses = 0, loads = 0, stores = 0;
-    uint64_t hits = 0, misses = 0, merged_misses = 0;  // loads only; stores neither hit nor miss
-    uint64_t bank_conflicts = 0, conflict_cycles = 0;
-    uint64_t fills = 0, bytes_read = 0, bytes_written = 0;
-    uint64_t downstream_requests = 0, downstream_bytes = 0;
-    // Loads answered as the precise order would although they arrived out of order (LT
-    // only; always 0 in precise mode): see CacheCore.
-    uint64_t reordered = 0;
-    double energy_nj = 0.0;
-  };
+  using Counters = CacheCounters;
 
   L1DataCache(sc_core::sc_module_name name, const L1DataCacheConfig& config, SparseMemory& backing);
 
-  const Counters& counters() const { return counters_; }
-  const StatGroup& stats() const { return stats_; }
-  const CacheCore& core() const { return core_; }
+  const Counters& counters() const { return path_.counters(); }
+  const stats::Group& stats() const { return stats_; }
+  const CacheCore& core() const { return path_.core(); }
   // VCD: accesses, misses and bank conflicts per cycle over each window. Before sc_start.
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
@@ -53,15 +41,8 @@ class L1DataCache : public sc_core::sc_module {
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
 
   L1DataCacheConfig config_;
-  SparseMemory& backing_;
-  transport::Clock clock_;
-  CacheCore core_;
-  DownstreamPort below_;
-  Counters counters_;
-  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
-  StatGroup stats_;
-  WindowTrace trace_;
-  std::size_t tr_accesses_, tr_misses_, tr_conflicts_;
+  CachePath path_;
+  stats::Group stats_;
 };
 
 }  // namespace strata::memory

@@ -4,13 +4,11 @@
 // Time as in the L1 data cache: bank slot at or after the request cycle, plus hit latency.
 #pragma once
 
-#include "model/memory/cache_core.h"
+#include "model/memory/cache_path.h"
 #include "model/memory/config.h"
-#include "model/memory/downstream_port.h"
 #include "model/memory/sparse_memory.h"
-#include "model/memory/stats.h"
 #include "model/memory/window_trace.h"
-#include "tlm/clock.h"
+#include "model/stats/stat_group.h"
 
 #include <systemc>
 #include <tlm>
@@ -25,33 +23,20 @@ class L1InstructionCache : public sc_core::sc_module {
   // Must be bound even when misses are not modelled (bind it to the L2 side or a sink).
   tlm_utils::simple_initiator_socket<L1InstructionCache> downstream{"downstream"};
 
-  struct Counters {
-    uint64_t accesses = 0, hits = 0, misses = 0, merged_misses = 0;
-    uint64_t bank_conflicts = 0, conflict_cycles = 0, fills = 0, bytes_read = 0;
-    uint64_t downstream_requests = 0, downstream_bytes = 0;
-    uint64_t reordered = 0;  // LT only: answered as in precise order (see CacheCore)
-    double energy_nj = 0.0;
-  };
+  using Counters = CacheCounters;
 
   L1InstructionCache(sc_core::sc_module_name name, const L1InstructionCacheConfig& config, SparseMemory& backing);
 
-  const Counters& counters() const { return counters_; }
-  const StatGroup& stats() const { return stats_; }
+  const Counters& counters() const { return path_.counters(); }
+  const stats::Group& stats() const { return stats_; }
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
 
   L1InstructionCacheConfig config_;
-  SparseMemory& backing_;
-  transport::Clock clock_;
-  CacheCore core_;
-  DownstreamPort below_;
-  Counters counters_;
-  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
-  StatGroup stats_;
-  WindowTrace trace_;
-  std::size_t tr_accesses_, tr_misses_;
+  CachePath path_;
+  stats::Group stats_;
 };
 
 }  // namespace strata::memory

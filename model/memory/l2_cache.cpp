@@ -1,131 +1,93 @@
 #include "model/memory/l2_cache.h"
 
+#include <string>
+
 namespace strata::memory {
 
+using stats::Unit;
 using transport::AccessClass;
-using transport::Cycle;
-using transport::MemoryExtension;
 using transport::ServedBy;
 
 L2Cache::L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMemory& backing)
     : sc_core::sc_module(name),
       config_((config.validate(), config)),
-      energy_per_access_(config.energy_per_access_nj()),
-      backing_(backing),
-      core_(CacheGeometry{config.size_bytes, config.banks, config.line_bytes, config.ways,
-                          config.calendar_horizon_cycles}),
-      below_(downstream, config.line_bytes),
-      stats_(basename()) {
+      path_(CacheGeometry{config.size_bytes, config.banks, config.line_bytes, config.ways,
+                          config.calendar_horizon_cycles},
+            config.hit_latency_cycles, config.energy_per_access_nj(), backing, downstream, "accesses_per_cycle"),
+      banks_(config.banks),
+      stats_("l2", "The shared L2 (banked, write-back, write-allocate): the L1s' misses and write-arounds.",
+             stats::Basis::kDataOps) {
   target.register_b_transport(this, &L2Cache::b_transport);
-  Counters& c = counters_;
-  stats_.add({{"accesses", &c.accesses}, {"loads", &c.loads}, {"stores", &c.stores}, {"hits", &c.hits},
-              {"misses", &c.misses}, {"merged_misses", &c.merged_misses}, {"bank_conflicts", &c.bank_conflicts},
-              {"conflict_cycles", &c.conflict_cycles}, {"fills", &c.fills}, {"writebacks", &c.writebacks},
-              {"bytes_read", &c.bytes_read}, {"bytes_written", &c.bytes_written},
-              {"dram_requests", &c.dram_requests}, {"dram_bytes", &c.dram_bytes}});
-  stats_.add("reordered", &c.reordered);
-  stats_.add("energy_nj", &c.energy_nj);
-  tr_accesses_ = trace_.add_rate("accesses_per_cycle");
-  tr_misses_ = trace_.add_rate("misses_per_cycle");
-  tr_conflicts_ = trace_.add_rate("bank_conflicts_per_cycle");
+  path_.register_stats(stats_, "DRAM", true, true, "dram_requests", "dram_bytes");
+  std::vector<const stats::Group*> each;
+  for (uint32_t b = 0; b < config_.banks; ++b) {
+    auto g = std::make_unique<stats::Group>("bank" + std::to_string(b), "One L2 bank.");
+    g->count("accesses", &banks_[b].accesses, Unit::kCount, "Lookups this bank served.");
+    g->count("misses", &banks_[b].misses, Unit::kCount, "Of those, misses to DRAM.");
+    g->count("conflict_cycles", &banks_[b].conflict_cycles, Unit::kCycles, "Cycles lookups waited for this bank.");
+    each.push_back(g.get());
+    bank_stats_.push_back(std::move(g));
+  }
+  stats_.instances("banks", each, "l2-bank", "L2 banks", false);
 }
 
-void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
+void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { path_.trace().open(file, name(), window); }
 
 void L2Cache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
-  MemoryExtension* ext = gp.get_extension<MemoryExtension>();
+  const auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
-  const uint64_t addr = gp.get_address();
-  const uint32_t bytes = gp.get_data_length();
-  if (transport::is_stream_access(access) || gp.get_command() == tlm::TLM_IGNORE_COMMAND) {
-    gp.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+  CachePath::Request r;
+  if (!path_.begin(gp, delay, !transport::is_stream_access(access) && gp.get_command() != tlm::TLM_IGNORE_COMMAND, r))
     return;
-  }
-  if (core_.crosses_line(addr, bytes)) {
-    gp.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
-    return;
-  }
-  const bool store = gp.is_write();
-  if (ext == nullptr || !ext->timing_only) {
-    if (store) backing_.write(addr, gp.get_data_ptr(), bytes);
-    else backing_.read(addr, gp.get_data_ptr(), bytes);
-  }
-
-  const Cycle now = clock_.now();
-  const Cycle t = clock_.request_cycle(delay);
-  const uint64_t line = core_.line_of(addr);
-  const uint32_t set = core_.set_of(line);
-  const uint32_t bank = core_.bank_of(line);
-  const Cycle slot = core_.book_bank(bank, t, now);
-  const Cycle answer = slot + config_.hit_latency_cycles;
-  Counters& c = transport::counts(ext) ? counters_ : uncounted_;  // sampled: warm-up and fast-forward
-  ++c.accesses;
-  c.energy_nj += energy_per_access_;
-  if (slot > t) {
-    ++c.bank_conflicts;
-    c.conflict_cycles += slot - t;
-  }
-  if (store) {
-    ++c.stores;
-    c.bytes_written += bytes;
-  } else {
-    ++c.loads;
-    c.bytes_read += bytes;
-  }
-
-  Cycle done = answer;
-  ServedBy served = ServedBy::kL2;
-  bool ok = true;
-  const CacheCore::Lookup look = core_.classify(set, line, slot, answer);
-  const bool missed = look.outcome == CacheCore::Outcome::kMiss ||
-                      (look.outcome == CacheCore::Outcome::kShadowHit && store);  // the line is gone
-  if (!missed) {
+  CacheCore& core = path_.core();
+  CacheCounters& c = *r.c;
+  CachePath::Result res{r.answer, ServedBy::kL2, true, false};
+  const CacheCore::Lookup look = core.classify(r.set, r.line, r.slot, r.answer);
+  // A store whose line was evicted by a later access (a shadow hit) finds the line gone.
+  res.missed = look.outcome == CacheCore::Outcome::kMiss ||
+               (look.outcome == CacheCore::Outcome::kShadowHit && r.store);
+  if (!res.missed) {
     if (look.way != CacheCore::kMiss) {
       const auto way = static_cast<uint32_t>(look.way);
-      core_.touch(set, way);
-      if (store) core_.set_dirty(set, way);
+      core.touch(r.set, way);
+      if (r.store) core.set_dirty(r.set, way);
     }
-    if (look.outcome == CacheCore::Outcome::kShadowHit || look.outcome == CacheCore::Outcome::kTimeShifted)
-      ++c.reordered;
-    if (look.outcome == CacheCore::Outcome::kHit || look.outcome == CacheCore::Outcome::kShadowHit) {
-      ++c.hits;
-    } else {
-      ++c.merged_misses;
-      done = look.done;
-      served = ServedBy::kL2Merged;
+    path_.count_read_outcome(r, look.outcome);
+    if (look.outcome == CacheCore::Outcome::kMerged || look.outcome == CacheCore::Outcome::kTimeShifted) {
+      res.done = look.done;
+      res.served = ServedBy::kL2Merged;
     }
   } else {
-    ++c.misses;
-    const uint32_t way = core_.victim(set);
-    if (core_.valid(set, way) && core_.dirty(set, way)) {
+    path_.count_read_outcome(r, CacheCore::Outcome::kMiss);
+    const uint32_t way = core.victim(r.set);
+    if (core.valid(r.set, way) && core.dirty(r.set, way)) {
       ++c.writebacks;  // posted: the requester does not wait for it, DRAM still books it
-      ok = below_.send(tlm::TLM_WRITE_COMMAND, core_.line_base(core_.line_at(set, way)), config_.line_bytes,
-                       answer, ext).ok;
+      res.ok = path_.below()
+                   .send(tlm::TLM_WRITE_COMMAND, core.line_base(core.line_at(r.set, way)), core.line_bytes(),
+                         r.answer, r.ext, core.data_class(r.set, way))
+                   .ok;
     }
-    if (store && bytes == config_.line_bytes) {
-      core_.install(set, way, line, slot, answer, true);  // whole line written: nothing to fetch
+    if (r.store && r.bytes == core.line_bytes()) {
+      core.install(r.set, way, r.line, r.slot, r.answer, true, r.data);  // whole line written: nothing to fetch
     } else {
-      const DownstreamResult r = below_.send(tlm::TLM_READ_COMMAND, core_.line_base(line), config_.line_bytes, answer, ext);
-      ok = ok && r.ok;
-      done = r.done;
-      served = r.served_by;
-      core_.install(set, way, line, slot, done, store);
-      core_.book_bank(bank, done, now);
+      const DownstreamResult d =
+          path_.below().send(tlm::TLM_READ_COMMAND, core.line_base(r.line), core.line_bytes(), r.answer, r.ext, r.data);
+      res.ok = res.ok && d.ok;
+      res.done = d.done;
+      res.served = d.served_by;
+      core.install(r.set, way, r.line, r.slot, d.done, r.store, r.data);
+      core.book_bank(r.bank, d.done, r.now);
       ++c.fills;
-      c.energy_nj += energy_per_access_;
+      c.energy_nj += path_.access_energy_nj();
     }
   }
-  c.dram_requests = below_.requests();
-  c.dram_bytes = below_.bytes();
-
-  if (trace_.enabled()) {
-    trace_.count(tr_accesses_, 1, now);
-    trace_.count(tr_misses_, missed ? 1 : 0, now);
-    trace_.count(tr_conflicts_, slot > t ? 1 : 0, now);
+  if (transport::counts(r.ext)) {
+    BankCounters& b = banks_[r.bank];
+    ++b.accesses;
+    b.misses += res.missed ? 1 : 0;
+    b.conflict_cycles += r.slot - r.t;
   }
-  if (ext != nullptr) ext->served_by = served;
-  gp.set_response_status(ok ? tlm::TLM_OK_RESPONSE : tlm::TLM_GENERIC_ERROR_RESPONSE);
-  delay = clock_.delay_until(done);
+  path_.finish(gp, delay, r, res);
 }
 
 }  // namespace strata::memory

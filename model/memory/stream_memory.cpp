@@ -15,16 +15,31 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
       sram_(make_stream_layout(config)),
       scheduler_(config.treelets, sram_.capacity(), config.tms, config.policy, config.sticky),
       ports_(config.ports, config.calendar_horizon_cycles),
-      stats_(basename()) {
+      stats_("stream", "The ray stream memory: treelet buffers of rays (STRaTA designs).", stats::Basis::kStreamOps) {
   target.register_b_transport(this, &StreamMemory::b_transport);
-  capacity_ = sram_.capacity();
-  Counters& c = counters_;
-  stats_.add({{"accesses", &c.accesses}, {"pushes", &c.pushes}, {"pops", &c.pops}, {"queries", &c.queries},
-              {"full_rejections", &c.full_rejections}, {"empty_pops", &c.empty_pops},
-              {"assignments", &c.assignments}, {"port_conflicts", &c.port_conflicts},
-              {"conflict_cycles", &c.conflict_cycles}, {"bytes_read", &c.bytes_read},
-              {"bytes_written", &c.bytes_written}, {"stored", &stored_}, {"capacity", &capacity_}});
-  stats_.add("energy_nj", &c.energy_nj);
+  using stats::Unit;
+  const Counters& c = counters_.counted;
+  stats::Group& g = stats_;
+  g.count("accesses", &c.accesses, Unit::kCount, "Operations: pushes, pops and queries.");
+  g.count("pushes", &c.pushes, Unit::kCount, "Ray pushes, refused ones included.");
+  g.count("pops", &c.pops, Unit::kCount, "Ray pops, empty ones included.");
+  g.count("queries", &c.queries, Unit::kCount, "Size, assign and capacity queries (head/count region only).");
+  g.count("full_rejections", &c.full_rejections, Unit::kCount, "Pushes refused because the memory was full (retried).");
+  g.count("empty_pops", &c.empty_pops, Unit::kCount, "Pops that found the buffer empty.");
+  g.count("assignments", &c.assignments, Unit::kCount, "Treelet buffers handed to TMs.");
+  g.count("port_conflicts", &c.port_conflicts, Unit::kCount, "Pushes and pops that found every port busy.");
+  g.count("conflict_cycles", &c.conflict_cycles, Unit::kCycles, "Cycles pushes and pops waited for a port.");
+  g.count("bytes_read", &c.bytes_read, Unit::kBytes, "Bytes of the rays popped.");
+  g.count("bytes_written", &c.bytes_written, Unit::kBytes, "Bytes of the rays pushed.");
+  g.level("stored", [this] { return uint64_t{sram_.stored()}; }, Unit::kCount, "Rays stored when the frame ended.");
+  g.level("capacity", [this] { return uint64_t{sram_.capacity()}; }, Unit::kCount,
+          "Rays the memory holds (its size less the heads, links and thread bits).");
+  g.level("calendar_overflow_bookings", [this] { return ports_.overflow_bookings(); }, Unit::kCount,
+          "Fidelity: port bookings beyond the calendar horizon, served late in arrival order; must be 0.");
+  g.count("energy_nj", &c.energy_nj, Unit::kNanojoules, "Energy of the operations.");
+  by_data_stats_ = std::make_unique<DataTrafficStats>(c.by_data, false, "Operations on data of this class.",
+                                                      "Bytes of this class moved.");
+  g.child(&by_data_stats_->group());
   tr_stored_ = trace_.add_level("stored_rays");
   tr_pushes_ = trace_.add_rate("pushes_per_cycle");
   tr_pops_ = trace_.add_rate("pops_per_cycle");
@@ -56,7 +71,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   // A functional access (sampled timing's fast-forward) moves rays like any other but books
   // no port; neither it nor a warm-up access is counted: the statistics hold the measured
   // parts of the detailed windows only.
-  Counters& c = transport::counts(ext) ? counters_ : uncounted_;
+  Counters& c = counters_.of(ext);
   ++c.accesses;
   c.energy_nj += energy_per_access_;
   Cycle done = t + config_.query_latency_cycles;
@@ -118,10 +133,12 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       result = sram_.capacity();
       break;
   }
-  stored_ = sram_.stored();
+  ClassTraffic& k = traffic(c.by_data, ext->data);
+  ++k.accesses;
+  if (result == 1 && moves_ray) k.bytes += StreamLayout::kRayBytes;
 
   if (trace_.enabled()) {
-    trace_.level(tr_stored_, static_cast<double>(stored_), now);
+    trace_.level(tr_stored_, static_cast<double>(sram_.stored()), now);
     trace_.count(tr_pushes_, access == AccessClass::kStreamPush && status == StreamStatus::kOk ? 1 : 0, now);
     trace_.count(tr_pops_, access == AccessClass::kStreamPop && status == StreamStatus::kOk ? 1 : 0, now);
     trace_.count(tr_full_, status == StreamStatus::kFull ? 1 : 0, now);

@@ -16,7 +16,8 @@
 #pragma once
 
 #include "model/memory/config.h"
-#include "model/memory/stats.h"
+#include "model/memory/data_traffic.h"
+#include "model/stats/stat_group.h"
 #include "model/memory/stream_scheduler.h"
 #include "model/memory/stream_sram.h"
 #include "model/memory/window_trace.h"
@@ -38,6 +39,7 @@ class StreamMemory : public sc_core::sc_module {
     uint64_t full_rejections = 0, empty_pops = 0, assignments = 0, port_conflicts = 0, conflict_cycles = 0;
     uint64_t bytes_read = 0, bytes_written = 0;
     double energy_nj = 0.0;
+    DataTraffic by_data{};
   };
 
   StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfig& config);
@@ -47,8 +49,8 @@ class StreamMemory : public sc_core::sc_module {
   uint32_t size(uint32_t treelet) const { return sram_.size(treelet); }
   const StreamLayout& layout() const { return sram_.layout(); }
   const StreamScheduler& scheduler() const { return scheduler_; }
-  const Counters& counters() const { return counters_; }
-  const StatGroup& stats() const { return stats_; }
+  const Counters& counters() const { return counters_.counted; }
+  const stats::Group& stats() const { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
   // VCD: rays stored, pushes and pops per cycle, rejected pushes per cycle.
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
@@ -62,10 +64,9 @@ class StreamMemory : public sc_core::sc_module {
   StreamSram sram_;
   StreamScheduler scheduler_;
   transport::ReservationCalendar ports_;
-  Counters counters_;
-  Counters uncounted_;  // where accesses the statistics leave out (sampled timing) are counted
-  StatGroup stats_;
-  uint64_t stored_ = 0, capacity_ = 0;  // mirrors for the statistics tree
+  transport::CountedPair<Counters> counters_;
+  stats::Group stats_;
+  std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;
   std::size_t tr_stored_, tr_pushes_, tr_pops_, tr_full_;
 };

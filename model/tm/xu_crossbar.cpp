@@ -264,4 +264,10 @@ XuStats XuCrossbar::stats(Cycle now) const {
   return s;
 }
 
+uint64_t XuCrossbar::overflow_bookings() const {
+  uint64_t n = box_.calendar.overflow_bookings() + triangle_.calendar.overflow_bookings();
+  for (const Unit& u : units_) n += u.calendar.overflow_bookings();
+  return n;
+}
+
 }  // namespace strata::tm

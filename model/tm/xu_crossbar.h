@@ -69,6 +69,8 @@ class XuCrossbar {
 
   // Counters as of `now` (the current mode's cycles are counted up to it).
   XuStats stats(Cycle now) const;
+  // Bookings its calendars had to place beyond their horizon (should be 0).
+  uint64_t overflow_bookings() const;
   const TmConfig& config() const { return config_; }
 
  private:

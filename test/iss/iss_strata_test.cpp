@@ -1,4 +1,4 @@
-// The STRaTA extension: encodings shared with firmware/common/strata_isa.h, operand and
+// The STRaTA extension: encodings shared with firmware/abi/strata_isa.h, operand and
 // memory plumbing through a recording hook, and the functional hook's semantics.
 #include "iss_test_support.h"
 

@@ -2,7 +2,7 @@
 // toolchain) and a small machine that runs a list of instruction words.
 #pragma once
 
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 #include "model/iss/csr.h"
 #include "model/iss/hart.h"
 

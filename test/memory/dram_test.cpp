@@ -1,6 +1,7 @@
 // DRAM channels on their own: unloaded latency, queueing, interleaving, per-channel counts,
 // and saturation at the configured peak bandwidth (256 B/cycle = 256 GB/s at 1 GHz).
 #include "memory_test_support.h"
+#include "model/stats/stat_values.h"
 
 #include "model/memory/dram.h"
 
@@ -39,7 +40,10 @@ TEST(Dram, UnloadedLatencyQueueingAndPerChannelCounts) {
   EXPECT_EQ(dram.channel(2).bytes_written, 128u);
   EXPECT_EQ(dram.counters().accesses, 6u);
   EXPECT_NEAR(dram.counters().energy_nj, 6 * 16.3, 1e-9);
-  EXPECT_NEAR(dram.stats().get("channel2.energy_nj"), 2 * 16.3, 1e-9);
+  stats::Values v = stats::Values::snapshot(dram.stats());
+  v.derive();
+  EXPECT_NEAR(v.number("channels[2].energy_nj"), 2 * 16.3, 1e-9);
+  EXPECT_EQ(v.count("bytes"), 64u * 4 + 128u);
 }
 
 TEST(Dram, SaturatesAtConfiguredPeakBandwidthWithinOnePercent) {

@@ -1,6 +1,7 @@
 // The L1 data cache on its own: a scripted initiator above, a fixed-latency sink below.
 // Geometry: 32 KB, 8 banks, 64 B lines, hit latency 1; the sink answers after 20 cycles.
 #include "memory_test_support.h"
+#include "model/stats/stat_values.h"
 
 #include "model/memory/l1_data_cache.h"
 
@@ -185,12 +186,17 @@ TEST(L1DataCache, StatisticsTreeNamesEveryCounter) {
   L1Bench b;
   Script s("script", [&] { b.tp.load(0, 0); b.tp.load(0, 50); });
   sc_core::sc_start();
-  const nlohmann::json j = b.l1.stats().to_json();
+  stats::Values v = stats::Values::snapshot(b.l1.stats());
+  v.derive();
+  const nlohmann::json j = v.to_json({});
   EXPECT_EQ(j.at("hits"), 1);
   EXPECT_EQ(j.at("misses"), 1);
   EXPECT_EQ(j.at("bytes_read"), 8);
+  EXPECT_DOUBLE_EQ(j.at("hit_rate").get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(j.at("energy_nj").get<double>(), 3 * 0.066);
-  EXPECT_DOUBLE_EQ(b.l1.stats().get("fills"), 1.0);
+  EXPECT_EQ(v.count("fills"), 1u);
+  EXPECT_EQ(v.units().at("conflict_cycles"), "cycles");
+  EXPECT_THROW(v.number("no_such_counter"), std::out_of_range);
 }
 
 }  // namespace

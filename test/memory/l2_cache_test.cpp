@@ -39,8 +39,8 @@ TEST(L2Cache, DirectMappedHitMissAndConflictMisses) {
   EXPECT_EQ(k.hits, 1u);
   EXPECT_EQ(k.misses, 3u);
   EXPECT_EQ(k.writebacks, 0u);
-  EXPECT_EQ(k.dram_requests, 3u);
-  EXPECT_EQ(k.dram_bytes, 192u);
+  EXPECT_EQ(k.downstream_requests, 3u);
+  EXPECT_EQ(k.downstream_bytes, 192u);
   EXPECT_NEAR(k.energy_nj, (4 + 3) * 0.524, 1e-12);  // 4 accesses + 3 fills, 512 KB entry
 }
 

@@ -2,7 +2,7 @@
 // decoded by the real decoder, plus encoders for the STRaTA ops the tests use.
 #pragma once
 
-#include "firmware/common/strata_isa.h"
+#include "firmware/abi/strata_isa.h"
 #include "model/iss/decoder.h"
 #include "model/tm/tm_config.h"
 #include "test/iss/iss_test_support.h"

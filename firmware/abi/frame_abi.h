@@ -22,6 +22,15 @@ struct FrameParams {
 };
 static_assert(sizeof(FrameParams) == 96, "FrameParams layout");
 
+// Global registers (strata.atomic*, strata.global*) the kernels and the platform agree on.
+constexpr uint32_t kPixelCounterRegister = 0;  // pixels handed out (baseline: also the pixels done)
+constexpr uint32_t kPixelsDoneRegister = 1;    // streaming kernels: pixels whose every sample is finished
+constexpr uint32_t kFillSlotRegister = 2;      // streaming kernels: path slots handed out by the initial fill
+
+// The streaming kernels keep one record per path in flight in a table the platform places
+// (BootBlock::path_table); the platform sizes the table from this.
+constexpr uint32_t kPathRecordBytes = 96;
+
 enum RayType : uint32_t { kPrimaryRay = 0, kBounceRay = 1, kShadowRay = 2, kRayTypes = 3 };
 
 // Statistics a thread accumulates; each thread owns one record, so no atomics are needed.

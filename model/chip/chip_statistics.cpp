@@ -1,0 +1,216 @@
+// The chip's statistics tree (docs/statistics.md is generated from it):
+//
+//   chip     the chip's size and clock
+//   frame    cycles, time, frame rate
+//   rays     rays by type, paths, node visits, triangle tests (from the kernels' counters)
+//   sampling sampled timing only: how much was timed, and the extrapolation factors
+//   instructions, xu      each TM's groups, summed (per TM with --stats-detail tm)
+//   memory   l1d, l1i (per TM, summed), l2 (banks), stream, interconnect, dram (channels)
+//   energy_nj            the paper's split, from the counts above
+//   fidelity             the sentinels that say whether the timing can be trusted
+#include <algorithm>
+
+#include "model/chip/chip.h"
+#include "model/chip/sampling_factors.h"
+#include "model/stats/stat_values.h"
+
+namespace strata::chip {
+
+using stats::Basis;
+using stats::Scope;
+using stats::Unit;
+
+void Chip::register_stats() {
+  auto own = [this](const char* name, const char* description, Basis basis = Basis::kInherit) -> stats::Group& {
+    stat_groups_.push_back(std::make_unique<stats::Group>(name, description, basis));
+    return *stat_groups_.back();
+  };
+  stats::Group& root = stats_;
+  root.before_snapshot([this] {
+    report_cycle_ = cycles();
+    ray_totals_ = ray_counters();
+    ray_total_ = 0;
+    for (uint32_t t = 0; t < kernels::kRayTypes; ++t) ray_total_ += ray_totals_.rays[t];
+  });
+
+  stats::Group& info = own("chip", "The simulated chip's size and clock.", Basis::kExact);
+  info.level("tms", [this] { return uint64_t{config_.tms}; }, Unit::kCount, "Thread multiprocessors.");
+  info.level("tps_per_tm", [this] { return uint64_t{config_.tps_per_tm}; }, Unit::kCount, "Thread processors per TM.");
+  info.level("threads", [this] { return uint64_t{config_.threads()}; }, Unit::kCount, "TPs on the chip.");
+  info.level("clock_ghz", [this] { return config_.clock_ghz; }, Unit::kGigahertz, "The chip clock.");
+  root.child(&info);
+
+  stats::Group& frame = own("frame", "The frame's simulated time.", Basis::kExact);
+  frame.level("cycles", [this] { return report_cycle_; }, Unit::kCycles,
+              "Cycles until the last TP finished (a run stopped early: as far as global time got).");
+  const double hz = config_.clock_ghz * 1e9;
+  frame.derived("seconds", Unit::kSeconds, "cycles at the chip clock.",
+                [hz](const Scope& s) { return s.self().number("cycles") / hz; });
+  frame.derived("frames_per_second", Unit::kPerSecond, "1 / seconds; null when the frame did not finish.",
+                [this](const Scope& s) {
+                  const double sec = s.self().number("seconds");
+                  return finished() && sec > 0 ? 1.0 / sec : std::nan("");
+                });
+  frame.level("pixels_done", [this] { return uint64_t{pixels_done()}; }, Unit::kCount,
+              "Pixels whose every sample is finished (baseline: handed out).");
+  root.child(&frame);
+
+  stats::Group& rays = own("rays", "Rays the kernels traced, from their own counters (exact).", Basis::kExact);
+  const char* type_names[kernels::kRayTypes] = {"primary", "bounce", "shadow"};
+  for (uint32_t t = 0; t < kernels::kRayTypes; ++t) {
+    stats::Group& g = own(type_names[t], t == kernels::kShadowRay ? "Shadow rays to the light." : "Closest-hit rays.");
+    g.count("traced", &ray_totals_.rays[t], Unit::kCount, "Rays of this type traced.");
+    g.count(t == kernels::kShadowRay ? "occluded" : "hit", &ray_totals_.hits[t], Unit::kCount,
+            t == kernels::kShadowRay ? "Shadow rays that found an occluder." : "Rays that hit a triangle.");
+    rays.child(&g);
+  }
+  rays.count("total", &ray_total_, Unit::kCount, "Rays of every type.");
+  rays.count("paths", &ray_totals_.paths, Unit::kCount, "Paths (samples) finished.");
+  rays.count("node_visits", &ray_totals_.node_visits, Unit::kCount, "BVH node reads.");
+  rays.count("triangle_tests", &ray_totals_.triangle_tests, Unit::kCount, "Ray-triangle tests.");
+  root.child(&rays);
+
+  if (config_.timing.mode == transport::TimingMode::kSampled) {
+    stats::Group& s = own("sampling",
+                          "Sampled timing only: how much of the frame was timed in detail, and the factors the "
+                          "estimated counts were extrapolated by.",
+                          Basis::kExact);
+    const auto sum = [this](uint64_t TmCounters::*field) {
+      return [this, field] {
+        uint64_t n = 0;
+        for (const auto& t : tms_) n += t->counters().*field;
+        return n;
+      };
+    };
+    s.level("period_cycles", [this] { return uint64_t{config_.timing.sample_period_cycles}; }, Unit::kCycles,
+            "The sampling period.");
+    s.level("detail_cycles", [this] { return uint64_t{config_.timing.sample_detail_cycles}; }, Unit::kCycles,
+            "The detailed window at the start of each period.");
+    s.level("warmup_cycles", [this] { return uint64_t{config_.timing.sample_warmup_cycles}; }, Unit::kCycles,
+            "The window's first cycles, timed but not measured.");
+    s.count_probe("timed_instructions", sum(&TmCounters::detailed_instructions), Unit::kCount,
+                  "Instructions timed one by one (the detailed windows).");
+    s.count_probe("measured_instructions", sum(&TmCounters::measured_instructions), Unit::kCount,
+                  "Of those, instructions in the measured parts (past the warm-up).");
+    s.count_probe("measured_data_ops", sum(&TmCounters::measured_data_ops), Unit::kCount,
+                  "Loads, stores and pipeline loads in the measured parts.");
+    s.count_probe("measured_stream_ops", sum(&TmCounters::stream_requests), Unit::kCount,
+                  "Stream-memory operations in the measured parts.");
+    s.derived("fast_forward_instructions", Unit::kCount, "Instructions run functionally (retired - timed).",
+              [](const Scope& x) {
+                return x.root().number("instructions.retired") - x.self().number("timed_instructions");
+              },
+              true);
+    const auto factor = [](Basis b) {
+      return [b](const Scope& x) { return extrapolation_factors(x.root())[b]; };
+    };
+    s.derived("extrapolation_factor", Unit::kRatio, "Instructions retired / timed: XU and stall counts.",
+              factor(Basis::kTimedInstructions));
+    s.derived("memory_extrapolation_factor", Unit::kRatio,
+              "Data operations of the frame / measured: L1 data, L2, interconnect, DRAM.", factor(Basis::kDataOps));
+    s.derived("fetch_extrapolation_factor", Unit::kRatio, "Instructions retired / measured: instruction fetch.",
+              factor(Basis::kMeasuredInstructions));
+    s.derived("stream_extrapolation_factor", Unit::kRatio,
+              "Stream operations of the frame / measured: stream memory.", factor(Basis::kStreamOps));
+    root.child(&s);
+  }
+
+  std::vector<const stats::Group*> instructions, xus, l1d, l1i;
+  for (size_t t = 0; t < tms_.size(); ++t) {
+    instructions.push_back(&tms_[t]->instruction_stats());
+    xus.push_back(&tms_[t]->xu_stats());
+    l1d.push_back(&l1d_[t]->stats());
+    l1i.push_back(&l1i_[t]->stats());
+  }
+  root.instances("instructions", instructions, "tm", "TMs");
+  root.instances("xu", xus, "tm", "TMs");
+  stats::Group& memory = own("memory", "Every level of the memory system, with its traffic by data class.");
+  memory.instances("l1d", l1d, "tm", "TMs' L1 data caches");
+  memory.instances("l1i", l1i, "tm", "TMs' L1 instruction caches");
+  memory.child(&l2_->stats());
+  memory.child(&stream_->stats());
+  memory.child(&interconnect_->stats());
+  memory.child(&dram_->stats());
+  root.child(&memory);
+
+  // Energy per frame, split as the STRaTA paper does: from the counts above, after sampled
+  // timing's extrapolation.
+  stats::Group& energy = own("energy_nj", "Energy per frame by component (nJ).", Basis::kExact);
+  const EnergyConfig e = config_.energy;
+  const double fetch_nj = config_.l1i.access_energy_nj;
+  energy.derived("l1_data", Unit::kNanojoules, "L1 data cache lookups and fills.",
+                 [](const Scope& s) { return s.root().number("memory.l1d.energy_nj"); });
+  energy.derived("l2_and_stream", Unit::kNanojoules, "L2 and stream-memory accesses.", [](const Scope& s) {
+    return s.root().number("memory.l2.energy_nj") + s.root().number("memory.stream.energy_nj");
+  });
+  energy.derived("dram", Unit::kNanojoules, "DRAM bursts.",
+                 [](const Scope& s) { return s.root().number("memory.dram.energy_nj"); });
+  energy.derived("instruction_fetch", Unit::kNanojoules,
+                 "Every retired instruction's fetch at the I-cache's energy per access.",
+                 [fetch_nj](const Scope& s) { return s.root().number("instructions.retired") * fetch_nj; });
+  energy.derived("register_file", Unit::kNanojoules, "Register-file reads and writes at energy.register_file_access_nj.",
+                 [e](const Scope& s) {
+                   const stats::Values& rf = s.root().group("instructions.register_file");
+                   return (rf.number("int_reads") + rf.number("int_writes") + rf.number("fp_reads") +
+                           rf.number("fp_writes")) *
+                          e.register_file_access_nj;
+                 });
+  energy.derived("xu", Unit::kNanojoules, "XU operations and fused tests at their energy.* figures.",
+                 [e](const Scope& s) {
+                   const stats::Values& xu = s.root().group("xu");
+                   const double per_class[tm::kXuClassCount] = {e.fp_mul_nj, e.fp_add_nj,    e.fp_cmp_nj,
+                                                                e.fp_div_nj, e.fp_inv_sqrt_nj, e.int_mul_nj,
+                                                                e.int_div_nj};
+                   double nj = xu.number("box_tests") * e.box_test_nj + xu.number("triangle_tests") * e.triangle_test_nj;
+                   for (unsigned c = 0; c < tm::kXuClassCount; ++c) {
+                     double ops = 0;
+                     for (unsigned m = 0; m < tm::kModeCount; ++m)
+                       ops += xu.number(std::string("by_mode.") + tm::mode_name(tm::PipelineMode(m)) + "." +
+                                        tm::xu_class_name(tm::XuClass(c)) + ".ops");
+                     nj += ops * per_class[c];
+                   }
+                   return nj;
+                 });
+  energy.derived("total", Unit::kNanojoules, "The sum of the parts above.", [](const Scope& s) {
+    const stats::Values& g = s.self();
+    return g.number("l1_data") + g.number("l2_and_stream") + g.number("dram") + g.number("instruction_fetch") +
+           g.number("register_file") + g.number("xu");
+  });
+  root.child(&energy);
+
+  stats::Group& fidelity = own("fidelity",
+                               "Sentinels of the timing's trustworthiness. Overflow bookings and late XU requests "
+                               "must be 0; reordered lookups are loosely timed's corrections (0 in precise).",
+                               Basis::kExact);
+  fidelity.derived("calendar_overflow_bookings", Unit::kCount,
+                   "Reservation-calendar bookings beyond their horizon, over every module. Nonzero: the "
+                   "contention of those requests was approximated; raise the calendar_horizon_cycles.",
+                   [](const Scope& s) {
+                     const stats::Values& r = s.root();
+                     double n = r.number("xu.calendar_overflow_bookings");
+                     for (const char* m : {"l1d", "l1i", "l2", "stream", "interconnect", "dram"})
+                       n += r.number(std::string("memory.") + m + ".calendar_overflow_bookings");
+                     return n;
+                   },
+                   true);
+  fidelity.derived("xu_late_requests", Unit::kCount,
+                   "XU requests older than the crossbar remembered. Nonzero: raise tm.xu_history_cycles.",
+                   [](const Scope& s) { return s.root().number("xu.late_requests"); }, true);
+  fidelity.derived("reordered_lookups", Unit::kCount,
+                   "Cache lookups that arrived out of time order and were answered as precise order would.",
+                   [](const Scope& s) {
+                     const stats::Values& r = s.root();
+                     return r.number("memory.l1d.reordered") + r.number("memory.l1i.reordered") +
+                            r.number("memory.l2.reordered");
+                   },
+                   true);
+  fidelity.derived("reordered_share", Unit::kRatio, "reordered_lookups / all cache lookups.", [](const Scope& s) {
+    const stats::Values& r = s.root();
+    const double all =
+        r.number("memory.l1d.accesses") + r.number("memory.l1i.accesses") + r.number("memory.l2.accesses");
+    return all > 0 ? s.self().number("reordered_lookups") / all : 0.0;
+  });
+  root.child(&fidelity);
+}
+
+}  // namespace strata::chip

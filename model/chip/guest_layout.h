@@ -1,0 +1,46 @@
+// Where a frame's data sit in guest memory, for every platform that runs a render kernel (the
+// chip, and the single-hart ISS render): one plan, one set of alignments. Above `base` come
+// the scene image (aligned to its treelet size, so each treelet is cache-aligned), the frame
+// parameters, the framebuffer, one RayCounters per thread and, for the streaming kernels,
+// the path table. Also what each range holds, for the traffic-by-data statistics.
+#pragma once
+
+#include <cstdint>
+
+#include "firmware/abi/boot_block.h"
+#include "firmware/common/scene_layout.h"
+#include "tlm/data_class.h"
+
+namespace strata::chip {
+
+struct FrameFootprint {
+  uint64_t scene_image_bytes = 0;
+  uint32_t treelet_bytes = 64;  // the image's alignment
+  uint32_t pixels = 0;
+  uint32_t threads = 1;        // RayCounters records
+  uint32_t path_slots = 0;     // PathRecords (0: no path table)
+};
+
+struct GuestLayout {
+  uint64_t code_begin = 0, code_end = 0;  // the kernel's loaded segments (set by the loader)
+  uint64_t stacks = 0, stacks_end = 0;    // the chip's per-TP stacks (none on the ISS render)
+  uint64_t scene_image = 0, frame = 0, framebuffer = 0, counters = 0, path_table = 0;
+  uint32_t path_slots = 0;
+  uint64_t end = 0;  // one past the last byte
+};
+
+uint64_t align_up(uint64_t v, uint64_t alignment);
+
+// The data above `base`. Throws std::runtime_error when it leaves the 32-bit address space.
+GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f);
+// Bytes plan_frame_layout can need above any base (alignment slack included).
+uint64_t frame_layout_bytes(const FrameFootprint& f);
+
+// What the kernel's strata_boot block gets.
+kernels::BootBlock boot_block(const GuestLayout& g);
+
+// Code, stacks and thread data, the scene image by section, the framebuffer and the path
+// table. `image` is the scene image header as loaded at g.scene_image.
+transport::DataClassMap data_class_map(const GuestLayout& g, const SceneImageHeader& image);
+
+}  // namespace strata::chip

@@ -1,0 +1,97 @@
+// What the L1 data cache, the L1 instruction cache and the L2 do around their own lookup
+// policy, written once: refuse what the cache does not serve, move the data through the
+// backing store (caches hold no data to go stale), book the bank, count the access; then
+// count what went below, update the VCD and answer with the completion time. The read path
+// with allocation (an L1 load or fetch) is shared too; the L2's write-back policy is its own.
+#pragma once
+
+#include "model/memory/cache_core.h"
+#include "model/memory/data_traffic.h"
+#include "model/memory/downstream_port.h"
+#include "model/memory/sparse_memory.h"
+#include "model/memory/window_trace.h"
+#include "model/stats/stat_group.h"
+#include "tlm/clock.h"
+#include "tlm/memory_extension.h"
+
+#include <tlm>
+
+#include <cstdint>
+
+namespace strata::memory {
+
+struct CacheCounters {
+  uint64_t accesses = 0, loads = 0, stores = 0;
+  uint64_t hits = 0, misses = 0, merged_misses = 0;  // loads only (an L1 store neither hits nor misses)
+  uint64_t bank_conflicts = 0, conflict_cycles = 0;
+  uint64_t fills = 0, writebacks = 0, bytes_read = 0, bytes_written = 0;
+  uint64_t downstream_requests = 0, downstream_bytes = 0;
+  // Lookups answered as the precise order would although they arrived out of order (LT
+  // only; always 0 in precise mode): see CacheCore.
+  uint64_t reordered = 0;
+  double energy_nj = 0.0;
+  DataTraffic by_data{};
+};
+
+class CachePath {
+ public:
+  using Cycle = transport::Cycle;
+
+  struct Request {
+    transport::MemoryExtension* ext = nullptr;
+    uint64_t addr = 0;
+    uint32_t bytes = 0;
+    bool store = false;
+    transport::DataClass data = transport::DataClass::kOther;
+    Cycle now = 0, t = 0, slot = 0, answer = 0;
+    uint64_t line = 0;
+    uint32_t set = 0, bank = 0;
+    CacheCounters* c = nullptr;  // the reported counters, or the uncounted copy
+  };
+  struct Result {
+    Cycle done = 0;
+    transport::ServedBy served = transport::ServedBy::kNone;
+    bool ok = true;
+    bool missed = false;  // went to the level below for this line
+  };
+
+  // `accesses_trace`: the VCD name of the access rate ("accesses_per_cycle").
+  CachePath(const CacheGeometry& geometry, uint32_t hit_latency_cycles, double access_energy_nj,
+            SparseMemory& backing, tlm::tlm_initiator_socket<>& downstream, const char* accesses_trace);
+
+  // Checks, data path, bank slot and the access's own counts. `accepted`: the cache serves
+  // this kind of request. False when refused (the response is set; nothing was counted).
+  bool begin(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, bool accepted, Request& r);
+  // A read that allocates on a miss (L1 loads and fetches). `model_misses` false: always a hit.
+  Result read_allocate(Request& r, bool model_misses, transport::ServedBy hit_level,
+                       transport::ServedBy merged_level);
+  // Counts a lookup outcome of a read (hits, merged, reordered).
+  void count_read_outcome(const Request& r, CacheCore::Outcome o);
+  // What went below, the VCD, the response and the delay.
+  void finish(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, const Request& r, const Result& res);
+
+  // Registers the counters every cache has; `below` names the level it misses to.
+  void register_stats(stats::Group& g, const char* below, bool stores, bool writebacks, const char* requests_name,
+                      const char* bytes_name);
+
+  CacheCore& core() { return core_; }
+  const CacheCore& core() const { return core_; }
+  DownstreamPort& below() { return below_; }
+  const CacheCounters& counters() const { return counters_.counted; }
+  double access_energy_nj() const { return energy_; }
+  WindowTrace& trace() { return trace_; }
+
+ private:
+  CacheCore core_;
+  uint32_t hit_latency_;
+  double energy_;
+  SparseMemory& backing_;
+  transport::Clock clock_;
+  DownstreamPort below_;
+  transport::CountedPair<CacheCounters> counters_;
+  std::unique_ptr<DataTrafficStats> by_data_stats_;
+  WindowTrace trace_;
+  std::size_t tr_accesses_, tr_misses_, tr_conflicts_;
+};
+
+}  // namespace strata::memory
