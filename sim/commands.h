@@ -18,5 +18,6 @@ void add_scene_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
+void add_stats_reference_command(CLI::App& app);
 
 }  // namespace strata::sim

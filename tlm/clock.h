@@ -38,6 +38,17 @@ class Clock {
   }
   uint64_t ticks_per_cycle() const { return ticks_; }
 
+  // The same three, against one reading of global time (`stamp` = sc_time_stamp().value()):
+  // a target that needs several of them per request reads the kernel's time once.
+  Cycle now_at(uint64_t stamp) const { return stamp / ticks_; }
+  Cycle request_cycle_at(uint64_t stamp, const sc_core::sc_time& delay) const {
+    return (stamp + delay.value() + ticks_ - 1) / ticks_;
+  }
+  sc_core::sc_time delay_until_at(uint64_t stamp, Cycle at) const {
+    const uint64_t target = at * ticks_;
+    return sc_core::sc_time::from_value(target > stamp ? target - stamp : 0);
+  }
+
  private:
   uint64_t ticks_;
 };

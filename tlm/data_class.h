@@ -39,12 +39,24 @@ constexpr const char* data_class_label(DataClass c) {
 }
 
 // Guest address ranges and what they hold; addresses outside every range are kOther.
-// Lookups are a binary search over a handful of ranges (no allocation).
+// A lookup is one load from a table of 4 KB pages; only a page shared by two ranges falls
+// back to a binary search over the ranges. No allocation after add().
 class DataClassMap {
  public:
   // [begin, end); ranges must not overlap. Empty ranges are ignored.
   void add(uint64_t begin, uint64_t end, DataClass c);
   DataClass of(uint64_t addr) const {
+    const uint64_t page = addr >> kPageShift;
+    if (page < pages_.size() && pages_[page] != kMixed) return static_cast<DataClass>(pages_[page]);
+    return search(addr);
+  }
+  std::size_t ranges() const { return begins_.size(); }
+
+ private:
+  static constexpr unsigned kPageShift = 12;
+  static constexpr uint8_t kMixed = 0xFF;
+  void rebuild_pages();
+  DataClass search(uint64_t addr) const {
     std::size_t lo = 0, hi = begins_.size();
     while (lo < hi) {  // first range whose begin is > addr
       const std::size_t mid = (lo + hi) / 2;
@@ -55,11 +67,10 @@ class DataClassMap {
     const std::size_t r = lo - 1;
     return addr < ends_[r] ? classes_[r] : DataClass::kOther;
   }
-  std::size_t ranges() const { return begins_.size(); }
 
- private:
   std::vector<uint64_t> begins_, ends_;  // sorted by begin
   std::vector<DataClass> classes_;
+  std::vector<uint8_t> pages_;  // the class of each page below the last range's end, or kMixed
 };
 
 }  // namespace strata::transport

@@ -122,11 +122,11 @@ void Chip::register_stats() {
     l1d.push_back(&l1d_[t]->stats());
     l1i.push_back(&l1i_[t]->stats());
   }
-  root.instances("instructions", instructions, "tm", "TMs");
-  root.instances("xu", xus, "tm", "TMs");
+  root.instances("instructions", instructions, "tm", "TM");
+  root.instances("xu", xus, "tm", "TM");
   stats::Group& memory = own("memory", "Every level of the memory system, with its traffic by data class.");
-  memory.instances("l1d", l1d, "tm", "TMs' L1 data caches");
-  memory.instances("l1i", l1i, "tm", "TMs' L1 instruction caches");
+  memory.instances("l1d", l1d, "tm", "TM's L1 data cache");
+  memory.instances("l1i", l1i, "tm", "TM's L1 instruction cache");
   memory.child(&l2_->stats());
   memory.child(&stream_->stats());
   memory.child(&interconnect_->stats());
@@ -180,7 +180,7 @@ void Chip::register_stats() {
 
   stats::Group& fidelity = own("fidelity",
                                "Sentinels of the timing's trustworthiness. Overflow bookings and late XU requests "
-                               "must be 0; reordered lookups are loosely timed's corrections (0 in precise).",
+                               "must be 0; reordered lookups are corrections loosely timed makes by design.",
                                Basis::kExact);
   fidelity.derived("calendar_overflow_bookings", Unit::kCount,
                    "Reservation-calendar bookings beyond their horizon, over every module. Nonzero: the "
@@ -197,7 +197,7 @@ void Chip::register_stats() {
                    "XU requests older than the crossbar remembered. Nonzero: raise tm.xu_history_cycles.",
                    [](const Scope& s) { return s.root().number("xu.late_requests"); }, true);
   fidelity.derived("reordered_lookups", Unit::kCount,
-                   "Cache lookups that arrived out of time order and were answered as precise order would.",
+                   "Cache lookups that arrived out of time order and were answered as time order would.",
                    [](const Scope& s) {
                      const stats::Values& r = s.root();
                      return r.number("memory.l1d.reordered") + r.number("memory.l1i.reordered") +

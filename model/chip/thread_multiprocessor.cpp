@@ -97,7 +97,8 @@ void ThreadMultiprocessor::sync_to(Cycle t) {
   const bool precise = config_.timing.mode == transport::TimingMode::kPrecise;
   if (t > global_cycle_ && (precise || t - global_cycle_ >= config_.timing.quantum_cycles)) {
     sc_core::wait(clock_.delay_until(t));
-    global_cycle_ = clock_.now();
+    stamp_ = sc_core::sc_time_stamp().value();
+    global_cycle_ = clock_.now_at(stamp_);
     // The crossbar may forget what lies before every TP of this TM: the TP being stepped
     // may be up to the TP slack ahead of the others (which can still ask for those cycles).
     xus_.retire_before(global_cycle_ > burst_slack_ ? global_cycle_ - burst_slack_ : 0);
@@ -111,7 +112,8 @@ void ThreadMultiprocessor::run() {
   // precise: not at all), so the schedule is consulted once per burst.
   TpSchedule schedule(static_cast<uint32_t>(tps_.size()));
   live_tps_ = static_cast<uint32_t>(tps_.size());
-  global_cycle_ = clock_.now();
+  stamp_ = sc_core::sc_time_stamp().value();
+  global_cycle_ = clock_.now_at(stamp_);
   while (schedule.top() != TpSchedule::kDone && error_.empty()) {
     const uint64_t best = schedule.top();
     const uint64_t second = schedule.runner_up();
@@ -119,6 +121,8 @@ void ThreadMultiprocessor::run() {
     const Cycle start = best >> 6;
     Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : (second >> 6) + burst_slack_;
     Tp& tp = *tps_[index];
+    // Every TP of this TM issues at or after `start` during this burst.
+    xus_.set_floor(start);
     Cycle window = 0;
     if (sampled_) {
       window = start - start % period_;
@@ -173,7 +177,7 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
   if ((access == AccessClass::kDataLoad || access == AccessClass::kDataStore) && env_.data_classes)
     gp.ext().data = env_.data_classes->of(addr);
   const MemoryExtension& ext = gp.ext();
-  sc_core::sc_time delay = clock_.delay_until(at);
+  sc_core::sc_time delay = clock_.delay_until_at(stamp_, at);
   port->b_transport(*gp, delay);
   if (gp->get_response_status() != tlm::TLM_OK_RESPONSE) {
     fail(tp, "memory access to 0x" + [&] {
@@ -184,7 +188,7 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
     return at;
   }
   if (result) *result = ext;
-  return clock_.request_cycle(delay);
+  return clock_.request_cycle_at(stamp_, delay);
 }
 
 Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {

@@ -143,6 +143,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   std::string error_;
   bool finished_ = false;
   transport::Cycle global_cycle_ = 0;  // global time, as of this thread's last wait
+  uint64_t stamp_ = 0;                 // ... in kernel time units (it stands still between waits)
   uint32_t live_tps_ = 0;              // TPs that have not halted
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 

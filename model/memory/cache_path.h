@@ -25,7 +25,6 @@ struct CacheCounters {
   uint64_t hits = 0, misses = 0, merged_misses = 0;  // loads only (an L1 store neither hits nor misses)
   uint64_t bank_conflicts = 0, conflict_cycles = 0;
   uint64_t fills = 0, writebacks = 0, bytes_read = 0, bytes_written = 0;
-  uint64_t downstream_requests = 0, downstream_bytes = 0;
   // Lookups answered as the precise order would although they arrived out of order (LT
   // only; always 0 in precise mode): see CacheCore.
   uint64_t reordered = 0;
@@ -43,6 +42,7 @@ class CachePath {
     uint32_t bytes = 0;
     bool store = false;
     transport::DataClass data = transport::DataClass::kOther;
+    uint64_t stamp = 0;  // global time when the request arrived (it does not move during it)
     Cycle now = 0, t = 0, slot = 0, answer = 0;
     uint64_t line = 0;
     uint32_t set = 0, bank = 0;
@@ -93,5 +93,110 @@ class CachePath {
   WindowTrace trace_;
   std::size_t tr_accesses_, tr_misses_, tr_conflicts_;
 };
+
+// The per-access steps are inline: every cache's b_transport is one hot function.
+inline bool CachePath::begin(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, bool accepted, Request& r) {
+  r.ext = gp.get_extension<transport::MemoryExtension>();
+  r.addr = gp.get_address();
+  r.bytes = gp.get_data_length();
+  if (!accepted) {
+    gp.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return false;
+  }
+  if (core_.crosses_line(r.addr, r.bytes)) {
+    gp.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return false;
+  }
+  r.store = gp.is_write();
+  r.data = transport::data_class_of(r.ext);
+  // Data path: the one backing store, in arrival order.
+  if (r.ext == nullptr || !r.ext->timing_only) {
+    if (r.store) backing_.write(r.addr, gp.get_data_ptr(), r.bytes);
+    else backing_.read(r.addr, gp.get_data_ptr(), r.bytes);
+  }
+
+  r.stamp = sc_core::sc_time_stamp().value();
+  r.now = clock_.now_at(r.stamp);
+  r.t = clock_.request_cycle_at(r.stamp, delay);
+  r.line = core_.line_of(r.addr);
+  r.set = core_.set_of(r.line);
+  r.bank = core_.bank_of(r.line);
+  r.slot = core_.book_bank(r.bank, r.t, r.now);
+  r.answer = r.slot + hit_latency_;
+  CacheCounters& c = counters_.of(r.ext);  // sampled timing: warm-up and fast-forward go apart
+  r.c = &c;
+  ++c.accesses;
+  c.energy_nj += energy_;
+  if (r.slot > r.t) {
+    ++c.bank_conflicts;
+    c.conflict_cycles += r.slot - r.t;
+  }
+  if (r.store) {
+    ++c.stores;
+    c.bytes_written += r.bytes;
+  } else {
+    ++c.loads;
+    c.bytes_read += r.bytes;
+  }
+  ClassTraffic& k = traffic(c.by_data, r.data);
+  ++k.accesses;
+  k.bytes += r.bytes;
+  return true;
+}
+
+inline void CachePath::count_read_outcome(const Request& r, CacheCore::Outcome o) {
+  CacheCounters& c = *r.c;
+  switch (o) {
+    case CacheCore::Outcome::kShadowHit: ++c.reordered; [[fallthrough]];
+    case CacheCore::Outcome::kHit: ++c.hits; break;
+    case CacheCore::Outcome::kTimeShifted: ++c.reordered; [[fallthrough]];
+    case CacheCore::Outcome::kMerged: ++c.merged_misses; break;
+    case CacheCore::Outcome::kMiss:
+      ++c.misses;
+      ++traffic(c.by_data, r.data).misses;
+      break;
+  }
+}
+
+inline CachePath::Result CachePath::read_allocate(Request& r, bool model_misses, transport::ServedBy hit_level, transport::ServedBy merged_level) {
+  Result res{r.answer, hit_level, true, false};
+  const CacheCore::Lookup look = model_misses ? core_.classify(r.set, r.line, r.slot, r.answer)
+                                              : CacheCore::Lookup{CacheCore::Outcome::kHit, 0, r.answer};
+  count_read_outcome(r, look.outcome);
+  switch (look.outcome) {
+    case CacheCore::Outcome::kShadowHit:
+    case CacheCore::Outcome::kHit: break;
+    case CacheCore::Outcome::kTimeShifted:
+    case CacheCore::Outcome::kMerged:  // the line is on its way: wait for that fill
+      res.done = look.done;
+      res.served = merged_level;
+      break;
+    case CacheCore::Outcome::kMiss: {
+      const DownstreamResult d =
+          below_.send(tlm::TLM_READ_COMMAND, core_.line_base(r.line), core_.line_bytes(), r.answer, r.ext, r.data);
+      res.ok = d.ok;
+      res.done = d.done;
+      res.served = d.served_by;
+      res.missed = true;
+      core_.install(r.set, 0, r.line, r.slot, d.done, false, r.data);
+      core_.book_bank(r.bank, d.done, r.now);  // writing the fill takes the bank for a cycle
+      ++r.c->fills;
+      r.c->energy_nj += energy_;
+      break;
+    }
+  }
+  return res;
+}
+
+inline void CachePath::finish(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, const Request& r, const Result& res) {
+  if (trace_.enabled()) {
+    trace_.count(tr_accesses_, 1, r.now);
+    trace_.count(tr_misses_, res.missed ? 1 : 0, r.now);
+    trace_.count(tr_conflicts_, r.slot > r.t ? 1 : 0, r.now);
+  }
+  if (r.ext != nullptr) r.ext->served_by = res.served;
+  gp.set_response_status(res.ok ? tlm::TLM_OK_RESPONSE : tlm::TLM_GENERIC_ERROR_RESPONSE);
+  delay = clock_.delay_until_at(r.stamp, res.done);
+}
 
 }  // namespace strata::memory

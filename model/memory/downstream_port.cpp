@@ -20,13 +20,14 @@ DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint3
   ext.timing_only = true;
   ext.data = data;
 
-  sc_core::sc_time delay = clock_.delay_until(at);
+  const uint64_t stamp = sc_core::sc_time_stamp().value();
+  sc_core::sc_time delay = clock_.delay_until_at(stamp, at);
   socket_->b_transport(*p, delay);
   if (!ext.uncounted) {
     ++requests_;
     bytes_ += bytes;
   }
-  return DownstreamResult{p->is_response_ok(), clock_.request_cycle(delay), ext.served_by};
+  return DownstreamResult{p->is_response_ok(), clock_.request_cycle_at(stamp, delay), ext.served_by};
 }
 
 }  // namespace strata::memory

@@ -53,7 +53,7 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
   std::vector<const stats::Group*> each;
   for (uint32_t c = 0; c < config_.channels; ++c) {
     ChannelCounters& k = channels_[c];
-    auto group = std::make_unique<stats::Group>("channel" + std::to_string(c), "One DRAM channel.");
+    auto group = std::make_unique<stats::Group>("channel" + std::to_string(c), "The DRAM channels.");
     group->count("accesses", &k.accesses, Unit::kCount, "Bursts.");
     group->count("requests", &k.requests, Unit::kCount, "Requests.");
     group->count("bytes_read", &k.bytes_read, Unit::kBytes, "Bytes read.");
@@ -66,7 +66,7 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
     tr_bandwidth_.push_back(trace_.add_rate("channel" + std::to_string(c) + ".bytes_per_cycle"));
     tr_depth_.push_back(trace_.add_level("channel" + std::to_string(c) + ".queue_cycles"));
   }
-  g.instances("channels", each, "channel", "DRAM channels", false);
+  g.instances("channels", each, "channel", "DRAM channel", false);
 }
 
 void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
@@ -95,8 +95,9 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   // A request is served by the channel of its first byte; caches send aligned lines, which
   // never straddle an interleave block.
   const uint32_t ch = channel_of(addr);
-  const Cycle now = clock_.now();
-  const Cycle t = clock_.request_cycle(delay);
+  const uint64_t stamp = sc_core::sc_time_stamp().value();
+  const Cycle now = clock_.now_at(stamp);
+  const Cycle t = clock_.request_cycle_at(stamp, delay);
   transport::ReservationCalendar& bus = buses_[ch];
   bus.retire_before(now);
   const Cycle data_from = t + config_.latency_cycles;
@@ -127,7 +128,7 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   }
   if (ext != nullptr) ext->served_by = transport::ServedBy::kDram;
   gp.set_response_status(tlm::TLM_OK_RESPONSE);
-  delay = clock_.delay_until(b.end());
+  delay = clock_.delay_until_at(stamp, b.end());
 }
 
 }  // namespace strata::memory

@@ -62,8 +62,9 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   const uint32_t flits = std::max<uint32_t>(1, (bytes + config_.link_bytes_per_cycle - 1) / config_.link_bytes_per_cycle);
   const bool data_in = gp.is_write();  // a store or push carries its data toward the target
 
-  const Cycle now = clock_.now();
-  const Cycle t = clock_.request_cycle(delay);
+  const uint64_t stamp = sc_core::sc_time_stamp().value();  // global time stands still during the call
+  const Cycle now = clock_.now_at(stamp);
+  const Cycle t = clock_.request_cycle_at(stamp, delay);
   transport::ReservationCalendar& in = tm_ports_[static_cast<uint32_t>(port)];
   transport::ReservationCalendar& link = links_[stream ? config_.l2_banks : bank_of(gp.get_address())];
   in.retire_before(now);
@@ -84,9 +85,9 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
     arrive = b.end();
   }
 
-  sc_core::sc_time d = clock_.delay_until(arrive);
+  sc_core::sc_time d = clock_.delay_until_at(stamp, arrive);
   (stream ? stream_side : l2_side)->b_transport(gp, d);
-  Cycle done = clock_.request_cycle(d);
+  Cycle done = clock_.request_cycle_at(stamp, d);
   if (!data_in) {
     const transport::Booking b = link.book(done, flits);
     if (b.first > done) {
@@ -108,7 +109,7 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
     trace_.count(tr_bytes_, bytes, now);
     trace_.count(tr_conflicts_, granted > t ? 1 : 0, now);
   }
-  delay = clock_.delay_until(done);
+  delay = clock_.delay_until_at(stamp, done);
 }
 
 }  // namespace strata::memory

@@ -21,14 +21,14 @@ L2Cache::L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMem
   path_.register_stats(stats_, "DRAM", true, true, "dram_requests", "dram_bytes");
   std::vector<const stats::Group*> each;
   for (uint32_t b = 0; b < config_.banks; ++b) {
-    auto g = std::make_unique<stats::Group>("bank" + std::to_string(b), "One L2 bank.");
+    auto g = std::make_unique<stats::Group>("bank" + std::to_string(b), "The L2's banks.");
     g->count("accesses", &banks_[b].accesses, Unit::kCount, "Lookups this bank served.");
     g->count("misses", &banks_[b].misses, Unit::kCount, "Of those, misses to DRAM.");
     g->count("conflict_cycles", &banks_[b].conflict_cycles, Unit::kCycles, "Cycles lookups waited for this bank.");
     each.push_back(g.get());
     bank_stats_.push_back(std::move(g));
   }
-  stats_.instances("banks", each, "l2-bank", "L2 banks", false);
+  stats_.instances("banks", each, "l2-bank", "L2 bank", false);
 }
 
 void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { path_.trace().open(file, name(), window); }

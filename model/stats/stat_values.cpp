@@ -174,9 +174,10 @@ void Values::collect_rows(const std::string& prefix, std::vector<Row>& out) cons
   if (!prefix.empty()) {
     std::string what = group_ ? group_->description() : "";
     if (!axis_.empty()) {
-      what += merged_ ? " Summed over the " + array_description_ + "; `--stats-detail " + axis_ +
+      what += merged_ ? " Summed over every " + array_description_ + "; `--stats-detail " + axis_ +
                             "` lists each under `per_" + axis_ + "`."
-                      : " One entry per " + array_description_ + ", listed with `--stats-detail " + axis_ + "`.";
+                      : " A list with one entry per " + array_description_ + ", written with `--stats-detail " +
+                            axis_ + "`.";
     }
     out.push_back(Row{prefix.substr(0, prefix.size() - 1), "", "", basis_name(basis_), what});
   }
@@ -184,8 +185,9 @@ void Values::collect_rows(const std::string& prefix, std::vector<Row>& out) cons
   const std::string base = (!axis_.empty() && !merged_) ? prefix.substr(0, prefix.size() - 1) + "[]." : prefix;
   for (const Stat& s : shape.stats_) {
     const bool scaled = s.def->kind == Kind::kCount && s.basis != Basis::kExact;
+    const bool computed = s.def->kind == Kind::kRatio || s.def->kind == Kind::kDerived;
     out.push_back(Row{base + s.def->name, unit_name(s.def->unit), kind_name(s.def->kind),
-                      scaled ? basis_name(s.basis) : "exact", s.def->description});
+                      scaled ? basis_name(s.basis) : computed ? "from its inputs" : "exact", s.def->description});
   }
   for (const Values& c : shape.children_) c.collect_rows(base + c.name_ + ".", out);
 }

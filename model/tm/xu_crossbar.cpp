@@ -116,14 +116,23 @@ void XuCrossbar::count(XuClass cls, Cycle start) {
 }
 
 void XuCrossbar::slide_window(Cycle earliest) {
-  // Slide in steps of history_ rather than every cycle: retiring touches every calendar.
-  if (earliest >= window_base_ + 2 * history_)
-    retire_before(earliest - history_);
-  else if (earliest < window_base_)
+  // Slide in steps of history_ rather than every cycle: retiring touches every calendar. The
+  // window never passes the floor (the oldest cycle a user may still ask for) unless a
+  // request would otherwise fall beyond the horizon.
+  if (earliest < window_base_) {
     ++stats_.late_requests;
+    return;
+  }
+  if (earliest < window_base_ + 2 * history_) return;
+  const Cycle wanted = earliest - history_;
+  const Cycle room = Cycle{config_.xu_horizon_cycles} / 2;  // keep half the horizon for bookings ahead
+  const Cycle must = earliest > room ? earliest - room : 0;
+  retire_to(std::max(std::min(wanted, floor_), must));
 }
 
-void XuCrossbar::retire_before(Cycle now) {
+void XuCrossbar::retire_before(Cycle now) { retire_to(std::min(now, floor_)); }
+
+void XuCrossbar::retire_to(Cycle now) {
   if (now <= window_base_) return;
   window_base_ = now;
   for (Unit& u : units_) u.calendar.retire_before(now);

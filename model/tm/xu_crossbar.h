@@ -64,8 +64,12 @@ class XuCrossbar {
   uint32_t general_units(XuClass cls, Cycle c) const;
 
   // Global time has reached `now`: forget the past. The crossbar also slides its window
-  // by itself, keeping xu_history_cycles behind the newest request.
+  // by itself, keeping xu_history_cycles behind the newest request, but not past the floor.
   void retire_before(Cycle now);
+  // No user will ask for a cycle before `floor` (its TPs' earliest next issue): the window
+  // may slide up to it by itself. Without a floor it slides freely (kept for tools that
+  // issue in time order).
+  void set_floor(Cycle floor) { floor_ = floor; }
 
   // Counters as of `now` (the current mode's cycles are counted up to it).
   XuStats stats(Cycle now) const;
@@ -98,6 +102,7 @@ class XuCrossbar {
   Cycle drain_end(const Unit& u, uint32_t keep, Cycle from) const;
   GeneralUnits taken_by(PipelineMode mode) const;
   void slide_window(Cycle earliest);
+  void retire_to(Cycle now);
   void require_mode(PipelineMode mode, const char* op) const;
   void count(XuClass cls, Cycle start);
 
@@ -111,6 +116,7 @@ class XuCrossbar {
   Cycle fused_drain_ = 0;  // when the last fused op issued so far has left its pipeline
   Cycle window_base_ = 0;  // oldest cycle the calendars remember
   Cycle history_;
+  Cycle floor_ = ~Cycle{0};
   XuStats stats_;
 };
 

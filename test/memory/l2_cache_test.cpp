@@ -1,6 +1,7 @@
 // The L2 on its own: a scripted initiator in place of the interconnect, a fixed-latency sink
 // in place of DRAM (100 cycles). 512 KB, 16 banks, 64 B lines, hit latency 3.
 #include "memory_test_support.h"
+#include "model/stats/stat_values.h"
 
 #include "model/memory/l2_cache.h"
 
@@ -39,8 +40,9 @@ TEST(L2Cache, DirectMappedHitMissAndConflictMisses) {
   EXPECT_EQ(k.hits, 1u);
   EXPECT_EQ(k.misses, 3u);
   EXPECT_EQ(k.writebacks, 0u);
-  EXPECT_EQ(k.downstream_requests, 3u);
-  EXPECT_EQ(k.downstream_bytes, 192u);
+  stats::Values v = stats::Values::snapshot(b.l2.stats());
+  EXPECT_EQ(v.count("dram_requests"), 3u);
+  EXPECT_EQ(v.count("dram_bytes"), 192u);
   EXPECT_NEAR(k.energy_nj, (4 + 3) * 0.524, 1e-12);  // 4 accesses + 3 fills, 512 KB entry
 }
 
