@@ -80,6 +80,9 @@ void surface_warnings(Scene& scene, const std::string& source, const std::string
       throw SceneError(source + ": " + line + " (truncated or corrupt file?)");
     }
     if (line.rfind("Failed to load material file", 0) == 0) continue;  // reported by MtlReader
+    // A material with both dissolve (d) and transparency (Tr): the renderer uses neither (only
+    // Kd), so the note is noise (Sibenik's .mtl repeats it for 13 materials).
+    if (line.rfind("Both `d` and `Tr` parameters defined", 0) == 0) continue;
     const std::string prefix = "material [ '";
     if (line.rfind(prefix, 0) == 0) {
       const size_t end = line.find("' ]", prefix.size());

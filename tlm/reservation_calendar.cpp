@@ -15,7 +15,8 @@ uint32_t round_up_pow2(uint32_t v) {
 
 ReservationCalendar::ReservationCalendar(uint32_t units_per_cycle, uint32_t horizon_cycles)
     : capacity_(units_per_cycle), horizon_(round_up_pow2(horizon_cycles)), mask_(2 * horizon_ - 1) {
-  if (capacity_ == 0) throw std::invalid_argument("ReservationCalendar: units_per_cycle must be > 0");
+  if (capacity_ == 0 || capacity_ > 65535)
+    throw std::invalid_argument("ReservationCalendar: units_per_cycle must be in [1, 65535]");
   if (horizon_cycles > (1u << 30)) throw std::invalid_argument("ReservationCalendar: horizon too large");
   // Twice the window's slots: a window not aligned to 64 cycles spans one block more than
   // it holds, and its first and last blocks must not share a word.
@@ -47,7 +48,7 @@ uint32_t ReservationCalendar::claim(Cycle c) {
   if (block_[w] != (c >> 6)) {
     block_[w] = c >> 6;
     full_[w] = 0;
-    if (capacity_ > 1) std::fill_n(used_.begin() + (w << 6), 64, 0u);
+    if (capacity_ > 1) std::fill_n(used_.begin() + (w << 6), 64, uint16_t{0});
   }
   return slot;
 }
@@ -77,7 +78,7 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
       full_[slot >> 6] |= bit;
     } else {
       take = std::min(capacity_ - used_[slot], units);
-      used_[slot] += take;
+      used_[slot] = static_cast<uint16_t>(used_[slot] + take);
       if (used_[slot] == capacity_) full_[slot >> 6] |= bit;
     }
     units -= take;
@@ -98,7 +99,7 @@ void ReservationCalendar::expose(Cycle from, Cycle to) {
   for (Cycle c = lo; c < hi; ++c) {
     const uint32_t slot = claim(c);
     full_[slot >> 6] |= uint64_t{1} << (slot & 63);
-    if (capacity_ > 1) used_[slot] = capacity_;
+    if (capacity_ > 1) used_[slot] = static_cast<uint16_t>(capacity_);
   }
   // The whole tail is inside the window now; later overflows start a new one.
   if (overflow_tail_ <= to) overflow_head_ = overflow_tail_ = 0;

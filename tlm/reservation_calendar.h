@@ -77,7 +77,7 @@ class ReservationCalendar {
   uint32_t mask_;  // slot of cycle c: c & mask_ (the ring holds 2 * horizon_ slots)
   std::vector<uint64_t> full_;   // bit per slot: no capacity left
   std::vector<Cycle> block_;     // per 64-slot word: the absolute block (cycle / 64) it holds
-  std::vector<uint32_t> used_;  // units per slot; empty when capacity_ == 1 (the bit says it)
+  std::vector<uint16_t> used_;  // units per slot; empty when capacity_ == 1 (the bit says it)
   Cycle base_ = 0;
   Cycle latest_end_ = 0;
   Cycle overflow_head_ = 0;  // [head, tail): hull of bookings placed beyond the window

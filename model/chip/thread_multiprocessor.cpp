@@ -236,6 +236,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     fail(tp, "the pc left the firmware's code");
     return false;
   }
+  const Cycle issue_slot = tp.timing.next_issue();
   const Cycle fetch_ready = fetch(tp, tp.hart.pc());
   const bool memory_like = tp.timing.is_memory(*d);
   const Cycle earliest = memory_like ? tp.timing.begin_memory(*d, fetch_ready) : 0;
@@ -290,6 +291,9 @@ bool ThreadMultiprocessor::step(Tp& tp) {
         trace_.level(tr_mode_, static_cast<double>(xus_.mode()), global_cycle_);
     }
   }
+  // mcycle counts the TP's cycles: retired instructions plus the cycles it waited.
+  const Cycle advance = tp.timing.next_issue() - issue_slot;
+  if (advance > 1) tp.hart.add_stall_cycles(advance - 1);
   return !stopped && error_.empty();
 }
 

@@ -64,6 +64,8 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   const uint64_t waits = std::min<uint64_t>(ff_waits_, r.executed);
   tp.ff_clock += ff_charge(r.executed, waits);
   tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
+  const Cycle charged = tp.timing.next_issue() - start;  // mcycle follows the charged time
+  if (charged > r.executed) tp.hart.add_stall_cycles(charged - r.executed);
   tp.forwarded = true;
   if (!error_.empty()) return false;
   if (r.reason != iss::StopReason::kInstructionLimit && r.reason != iss::StopReason::kYield) {

@@ -65,6 +65,7 @@ void StreamMemoryConfig::validate() const {
   need_positive("stream.threads", threads);
   need_positive("stream.tms", tms);
   need_positive("stream.ports", ports);
+  if (ports > 65535) bad("stream.ports", "must be at most 65535", ports);
   need_positive("stream.calendar_horizon_cycles", calendar_horizon_cycles);
   if (access_energy_nj) need_energy("stream.access_energy_nj", *access_energy_nj);
   else (void)energy_per_access_nj();
@@ -79,6 +80,9 @@ void DramConfig::validate() const {
   need_positive("dram.bytes_per_cycle", bytes_per_cycle);
   if (bytes_per_cycle % channels != 0)
     bad("dram.bytes_per_cycle", "must split evenly over dram.channels", bytes_per_cycle);
+  if (bytes_per_cycle / channels > 65535)
+    bad("dram.bytes_per_cycle", "must be at most 65535 per channel (a channel's calendar counts bytes per cycle)",
+        bytes_per_cycle);
   need_pow2("dram.interleave_bytes", interleave_bytes);
   need_pow2("dram.burst_bytes", burst_bytes);
   need_positive("dram.calendar_horizon_cycles", calendar_horizon_cycles);

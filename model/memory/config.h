@@ -22,7 +22,9 @@ struct L1DataCacheConfig {
   uint32_t line_bytes = 64;
   uint32_t hit_latency_cycles = 1;
   WritePolicy write_policy = WritePolicy::kWriteAround;
-  uint32_t calendar_horizon_cycles = 4096;  // must exceed the LT quantum + the longest miss
+  // Must exceed the LT quantum plus the longest wait a request can see, queueing included:
+  // 16384 keeps every booking of a 128-TM Sibenik frame inside (fidelity.calendar_overflow_bookings).
+  uint32_t calendar_horizon_cycles = 16384;
   // Per access (a lookup, or a line fill), nJ. STRaTA's table (../shared/ARCHITECTURE.md,
   // CACTI 6.5, 65 nm) leaves the L1 data cache out. This default is derived from that same
   // table rather than taken from a separate publication: a log-log fit through its 4 KB
@@ -41,7 +43,7 @@ struct L1InstructionCacheConfig {
   // false: every fetch hits (the firmware is a few KB, as TRaX assumed); true: misses go to
   // the L2 through the downstream socket.
   bool model_misses = true;
-  uint32_t calendar_horizon_cycles = 4096;
+  uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   double access_energy_nj = 0.014;  // STRaTA table: I-cache 4 KB, CACTI 6.5, 65 nm
   void validate() const;
 };
@@ -52,7 +54,7 @@ struct L2Config {
   uint32_t line_bytes = 64;
   uint32_t ways = 1;  // 1: direct-mapped; more: set-associative with LRU replacement
   uint32_t hit_latency_cycles = 3;
-  uint32_t calendar_horizon_cycles = 4096;
+  uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   // Unset: the STRaTA CACTI table entry for size_bytes (sram_access_energy_nj).
   std::optional<double> access_energy_nj;
   void validate() const;
@@ -75,7 +77,7 @@ struct StreamMemoryConfig {
   uint32_t query_latency_cycles = 1;  // size, assign, capacity: head/count region only
   SchedulingPolicy policy = SchedulingPolicy::kFullestFirst;
   bool sticky = true;  // a TM keeps its treelet while that buffer has rays
-  uint32_t calendar_horizon_cycles = 4096;
+  uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   // Unset: the L2 of the same size (STRaTA: a stream access costs about an L2 access).
   std::optional<double> access_energy_nj;
   void validate() const;
@@ -100,7 +102,7 @@ struct InterconnectConfig {
   uint32_t l2_line_bytes = 64;  // bank interleaving granule, as in the L2
   uint32_t link_bytes_per_cycle = 64;
   uint32_t hop_latency_cycles = 1;  // each way
-  uint32_t calendar_horizon_cycles = 4096;
+  uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   // STRaTA's CACTI figures include the arrays' own routing; the crossbar wires are not in
   // its table, so they cost nothing unless a figure is given.
   double transfer_energy_nj = 0.0;

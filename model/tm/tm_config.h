@@ -69,7 +69,9 @@ struct TmConfig {
   PipelineConfig pipelines;
   // Each XU calendar remembers this many cycles (rounded up to a power of two). Requests
   // that arrive up to xu_history_cycles behind the newest one are still timed exactly.
-  uint32_t xu_horizon_cycles = 4096;
+  // A TP's request can lie a whole memory wait ahead of its TM's earliest TP: 8192 covers the
+  // longest seen on a 128-TM Sibenik frame (fidelity.xu_late_requests stays 0).
+  uint32_t xu_horizon_cycles = 8192;
   uint32_t xu_history_cycles = 512;
 
   // Throws std::invalid_argument naming the first impossible field.

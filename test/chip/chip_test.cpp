@@ -31,6 +31,9 @@ TEST(Chip, BaselineFirmwareOnTwoTmsMatchesTheTwinInBothTimingModes) {
   }
 
   const nlohmann::json a = chip_report(lt, 1.0), b = chip_report(precise, 1.0);
+  expect_sentinels_quiet(a, transport::TimingMode::kLooselyTimed);
+  expect_sentinels_quiet(b, transport::TimingMode::kPrecise);
+  expect_by_data_sums_to_totals(b);
   EXPECT_EQ(a["timing"]["mode"], "loosely-timed");
   EXPECT_EQ(b["timing"]["mode"], "precise");
   // Functional results do not depend on timing: same instructions, same rays.
@@ -70,6 +73,21 @@ TEST(Chip, AFirmwareFaultIsReportedWithTheTmTpAndPc) {
   EXPECT_FALSE(chip.finished());
   EXPECT_NE(chip.error().find("TM 0, TP"), std::string::npos) << chip.error();
   EXPECT_NE(chip.error().find("stack"), std::string::npos) << chip.error();
+}
+
+TEST(Chip, McycleCountsTheTpsCyclesNotItsInstructions) {
+  SmallFrame frame(scenes::make_cornell({0.2, 1}), 4);
+  frame.inputs.kernel_elf = std::string(STRATA_ISS_FIRMWARE_DIR) + "/mcycle.elf";
+  Chip chip("chip", small_chip(transport::TimingMode::kPrecise, 1, 1), frame.inputs);
+  sc_core::sc_start();
+  ASSERT_TRUE(chip.finished()) << chip.error();
+  const kernels::RayCounters c = chip.ray_counters_per_thread()[0];
+  ASSERT_EQ(c.rays[2], 1u) << "the divides went wrong";
+  const uint64_t mcycle = c.rays[0], minstret = c.rays[1];
+  EXPECT_GT(minstret, 64u * 3);
+  // 64 dependent divides of latency 16 (docs/tm-timing.md): at least 15 waiting cycles each.
+  EXPECT_GE(mcycle, minstret + 64 * 15);
+  EXPECT_LE(mcycle, chip.cycles());
 }
 
 }  // namespace

@@ -57,6 +57,8 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
   EXPECT_EQ(rays.paths, 32u * 32u);
 
   const nlohmann::json r = chip_report(chip, 1.0);
+  expect_by_data_sums_to_totals(r);
+  expect_sentinels_quiet(r, mode);
   if (d.streams) {
     // Conservation: every ray stored in the stream memory was popped again, none is left.
     EXPECT_EQ(chip.stream().stored(), 0u);

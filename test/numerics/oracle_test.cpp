@@ -30,14 +30,10 @@
 #include "scenes/procedural/procedural.h"
 #include "scenes/scene_spec.h"
 
-#ifdef STRATA_HAVE_EMBREE
 #include "tools/oracle/embree_oracle.h"
-#endif
 
 namespace strata::numerics {
 namespace {
-
-#ifdef STRATA_HAVE_EMBREE
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -247,12 +243,6 @@ TEST(NumericsOracle, SibenikAgreesWithEmbree) {
     GTEST_SKIP() << "no " STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj";
   run_scene("sibenik", scenes::load_scene("sibenik", STRATA_SOURCE_DIR), 12000);
 }
-
-#else
-
-TEST(NumericsOracle, EmbreeNotAvailable) { GTEST_SKIP() << "built without Embree 3 (libembree-dev)"; }
-
-#endif
 
 }  // namespace
 }  // namespace strata::numerics

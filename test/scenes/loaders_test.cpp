@@ -3,11 +3,11 @@
 #include "scenes/validate.h"
 #include "loader_fixtures.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
-#include <chrono>
 
 namespace strata::scenes {
 namespace {
@@ -202,11 +202,7 @@ TEST(LoaderObj, Sibenik) {
   const fs::path file = STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj";
   if (!fs::exists(file)) GTEST_SKIP() << file << " not present";
   Scene s;
-  const auto start = std::chrono::steady_clock::now();
-  load_obj(s, file);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, 5.0) << "loading 73k triangles should take well under a second";
+  load_obj(s, file);  // its load time is measured by scripts/bench-scenes, never asserted here
   // Every face line of the file is a triangle; zero-area ones are dropped.
   EXPECT_EQ(s.triangles.size() + s.dropped_degenerate, 73564u);
   EXPECT_EQ(s.dropped_degenerate, 8u);  // all exactly collinear, measured
@@ -217,8 +213,16 @@ TEST(LoaderObj, Sibenik) {
   EXPECT_NEAR(b.max.x, 20.1f, 0.1f);
   EXPECT_NEAR(b.max.y, 15.3f, 0.1f);
   EXPECT_NEAR(b.max.z, 8.5f, 0.1f);
-  // The file's mtllib (untitled.mtl) is not shipped: default material plus a warning.
-  EXPECT_TRUE(any_warning_contains(s, "untitled.mtl"));
+  // Its material library (untitled.mtl, 15 materials) loads: the stone's Kd, not the default grey.
+  EXPECT_FALSE(any_warning_contains(s, "untitled.mtl"));
+  EXPECT_GE(s.materials.size(), 14u);
+  const auto stone = std::find_if(s.materials.begin(), s.materials.end(),
+                                  [](const Material& m) { return m.name == "kamen_zid"; });
+  ASSERT_NE(stone, s.materials.end());
+  EXPECT_NEAR(stone->albedo.x, 0.734118f, 1e-6f);
+  EXPECT_NEAR(stone->albedo.z, 0.674118f, 1e-6f);
+  // tinyobjloader's note on materials with both d and Tr is noise here: filtered out.
+  EXPECT_FALSE(any_warning_contains(s, "Tr"));
   for (const Triangle& t : s.triangles) ASSERT_LT(t.material, s.materials.size());
 }
 

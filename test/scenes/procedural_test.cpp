@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -273,12 +272,7 @@ TEST(ProceduralHairball, StrandsAreSmooth) {
 }
 
 TEST(ProceduralHairball, FullSizeCountsBoundsAndPrefix) {
-  const auto start = std::chrono::steady_clock::now();
-  const Scene scene = make_hairball({});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ info     ] full hairball: %zu triangles in %.3f s\n", scene.triangles.size(),
-              seconds);
+  const Scene scene = make_hairball({});  // build time: scripts/bench-scenes
   ASSERT_EQ(scene.triangles.size(), 2880000u);
   EXPECT_LE(max_radius(scene), 4.6f * 1.01f);
   expect_well_formed(scene);
@@ -315,12 +309,7 @@ void expect_inside_field(const Scene& scene) {
 }
 
 TEST(ProceduralVegetation, FullSizeMixOfGroundGrassAndTrees) {
-  const auto start = std::chrono::steady_clock::now();
-  const Scene scene = make_vegetation({});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ info     ] full vegetation: %zu triangles in %.3f s\n",
-              scene.triangles.size(), seconds);
+  const Scene scene = make_vegetation({});  // build time: scripts/bench-scenes
 
   const VegetationCounts c = vegetation_counts({});
   EXPECT_EQ(scene.triangles.size(), c.total_triangles());

@@ -62,7 +62,7 @@ TEST(XuConfig, ImpossibleValuesAreRejectedByName) {
   expect_rejected([](TmConfig& c) { c.pipelines.triangle_divide_latency = 0; },
                   "pipelines.triangle_divide_latency");
   expect_rejected([](TmConfig& c) { c.xu_history_cycles = 0; }, "xu_history_cycles");
-  expect_rejected([](TmConfig& c) { c.xu_history_cycles = 2048; }, "xu_history_cycles");
+  expect_rejected([](TmConfig& c) { c.xu_history_cycles = c.xu_horizon_cycles / 4 + 1; }, "xu_history_cycles");
   expect_rejected([](TmConfig& c) { c.xu_horizon_cycles = 32; }, "xu_horizon_cycles");
   // Fewer units make the default pipelines impossible.
   expect_rejected([](TmConfig& c) { c.xu.fp_mul.count = 6; }, "pipelines.box.multipliers");
