@@ -31,10 +31,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
       xus_(env.config->tm),
-      sampled_(env.config->timing.mode == transport::TimingMode::kSampled),
-      period_(env.config->timing.sample_period_cycles),
-      detail_(env.config->timing.sample_detail_cycles),
-      warmup_(env.config->timing.sample_warmup_cycles),
+      sampler_(env.config->timing, env.config->global_register_latency_cycles),
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions) {
@@ -45,6 +42,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
     Tp& t = *tps_.back();
     t.hart.reset(env.entry_pc);
     t.hart.set_x(2, t.stack_hi);  // crt0 keeps a preset sp
+    t.hart.use_cycle_clock(t.timing.clock());  // mcycle counts this TP's cycles
     if (env.tohost) t.hart.set_tohost(env.tohost);
   }
   register_stats();
@@ -124,13 +122,13 @@ void ThreadMultiprocessor::run() {
     // Every TP of this TM issues at or after `start` during this burst.
     xus_.set_floor(start);
     Cycle window = 0;
-    if (sampled_) {
-      window = start - start % period_;
-      if (start - window >= detail_) {
+    if (sampler_.enabled()) {
+      window = sampler_.window_of(start);
+      if (!sampler_.detailed(start)) {
         // Fast-forward: batches of up to kFastForwardQuanta quanta past the runner-up, never
         // into the next detailed window. Nothing is booked, so running that far ahead only
         // reorders stream operations between TMs, which the kernels are built to tolerate.
-        const Cycle next_window = window + period_;
+        const Cycle next_window = window + sampler_.period();
         const Cycle ahead = kFastForwardQuanta * Cycle{config_.timing.quantum_cycles};
         const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
@@ -142,7 +140,7 @@ void ThreadMultiprocessor::run() {
         }
         continue;
       }
-      until = std::min(until, window + detail_ - 1);  // the window's last cycle
+      until = std::min(until, sampler_.window_end(window));
       if (tp.forwarded) {  // detailed timing resumes with an empty scoreboard
         tp.timing.reset(start);
         tp.fetch_line = 0xFFFFFFFFu;
@@ -151,7 +149,7 @@ void ThreadMultiprocessor::run() {
     }
     for (Cycle t = start;; t = tp.timing.next_issue()) {
       sync_to(t);
-      if (sampled_) measuring_ = count_measured(window, t);
+      if (sampler_.enabled()) sampler_.count_measured(window, t);
       if (!step(tp)) {
         counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
         schedule.done(index);
@@ -172,8 +170,8 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                                      MemoryExtension* result) {
   transport::PooledPayload gp(pool_);
-  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only, functional_,
-                            !counting());
+  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only,
+                            sampler_.in_batch(), !counting());
   if ((access == AccessClass::kDataLoad || access == AccessClass::kDataStore) && env_.data_classes)
     gp.ext().data = env_.data_classes->of(addr);
   const MemoryExtension& ext = gp.ext();
@@ -236,7 +234,6 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     fail(tp, "the pc left the firmware's code");
     return false;
   }
-  const Cycle issue_slot = tp.timing.next_issue();
   const Cycle fetch_ready = fetch(tp, tp.hart.pc());
   const bool memory_like = tp.timing.is_memory(*d);
   const Cycle earliest = memory_like ? tp.timing.begin_memory(*d, fetch_ready) : 0;
@@ -255,7 +252,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   }
   ++counters_.instructions;
   ++counters_.detailed_instructions;
-  if (measuring_) {  // sampled timing only: the base of its extrapolation
+  if (sampler_.measuring()) {  // sampled timing only: the base of its extrapolation
     ++counters_.measured_instructions;
     if (is_data_op(iss::op_info(decoded.op).cls)) ++counters_.measured_data_ops;
   }
@@ -265,10 +262,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
     if (hook_timed_) {
       ready = std::max(ready, hook_ready_);
-      if (measuring_) {
-        ++measured_waits_;
-        measured_wait_cycles_ += ready - earliest;
-      }
+      if (sampler_.measuring()) sampler_.note_wait(ready - earliest);
     }
     tp.timing.complete_memory(decoded, earliest, ready);
   } else {
@@ -291,9 +285,6 @@ bool ThreadMultiprocessor::step(Tp& tp) {
         trace_.level(tr_mode_, static_cast<double>(xus_.mode()), global_cycle_);
     }
   }
-  // mcycle counts the TP's cycles: retired instructions plus the cycles it waited.
-  const Cycle advance = tp.timing.next_issue() - issue_slot;
-  if (advance > 1) tp.hart.add_stall_cycles(advance - 1);
   return !stopped && error_.empty();
 }
 
@@ -324,7 +315,7 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
       if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
       ++env_.globals->operations;
       ++counters_.global_register_ops;
-      if (functional_) ++ff_waits_;
+      if (sampler_.in_batch()) sampler_.note_batch_wait();
       hook_timed_ = true;
       hook_ready_ = request_cycle_ + config_.global_register_latency_cycles;
       return result;
@@ -348,7 +339,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   MemoryExtension ext;
   uint8_t scratch[48] = {};
   if (counting()) ++counters_.stream_requests;
-  if (functional_) ++ff_waits_;
+  if (sampler_.in_batch()) sampler_.note_batch_wait();
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
       hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,

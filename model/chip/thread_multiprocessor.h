@@ -29,6 +29,7 @@
 
 #include "model/chip/chip_config.h"
 #include "model/chip/global_registers.h"
+#include "model/chip/tm_sampler.h"
 #include "model/chip/tp_memory.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
@@ -108,14 +109,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool step(Tp& tp);  // false: the TP is done (halted, or failed)
   // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
   bool fast_forward(Tp& tp, transport::Cycle until);
-  double fast_forward_cpi(transport::Cycle window);
-  // Fast-forward cycles for `instructions`, of which `waits` stream/global operations.
-  double ff_charge(uint64_t instructions, uint64_t waits) const {
-    return double(instructions - waits) * compute_cpi_ + double(waits) * wait_cycles_;
-  }
-  bool count_measured(transport::Cycle window, transport::Cycle t);  // true: t is measured
   // Whether the current access goes into the statistics (sampled: measured parts only).
-  bool counting() const { return !sampled_ || measuring_; }
+  bool counting() const { return sampler_.counting(); }
   transport::Cycle fetch(Tp& tp, uint32_t pc);
   transport::Cycle time_data_access(Tp& tp, transport::Cycle at);
   transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
@@ -147,22 +142,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   uint32_t live_tps_ = 0;              // TPs that have not halted
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 
-  // Sampled timing.
-  bool sampled_ = false;
-  transport::Cycle period_ = 0, detail_ = 0, warmup_ = 0;
-  transport::Cycle measure_window_ = 0;  // the detailed window being measured (its first cycle)
-  uint64_t measured_ = 0;                // instructions issued in its measured part
-  uint64_t measured_waits_ = 0;          // of which stream and global-register operations
-  uint64_t measured_wait_cycles_ = 0;    // their cycles from request to answer
-  bool measuring_ = false;               // the instruction being stepped is measured
-  transport::Cycle cpi_window_ = ~transport::Cycle{0};
-  double cpi_ = 1.0;         // fast-forward: cycles per instruction of one TP, on average
-  double compute_cpi_ = 1.0; // ... of an instruction that is not a stream/global operation
-  double wait_cycles_ = 1.0; // ... of a stream or global-register operation
-  bool functional_ = false;  // inside a fast-forward batch
-  double ff_start_ = 0.0;    // the batch's start cycle, for dating its STRaTA ops
-  transport::Cycle ff_until_ = 0;  // ... and where it should end
-  uint64_t ff_waits_ = 0;    // stream/global operations in the batch so far
+  TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;

@@ -54,6 +54,9 @@ class Hart {
   void set_hook(StrataHook* hook) { hook_ = hook; }
   // mcycle = instructions retired + stall cycles that a timing wrapper reports here.
   void add_stall_cycles(uint64_t cycles) { stall_cycles_ += cycles; }
+  // Or: mcycle reads a timing wrapper's clock (the cycle the current instruction issues in),
+  // which costs the wrapper nothing per instruction. nullptr: back to retired + stalls.
+  void use_cycle_clock(const uint64_t* cycles) { cycle_clock_ = cycles; }
 
   uint64_t instructions_retired() const;
   uint64_t op_count(Op op) const { return op_counts_[static_cast<unsigned>(op)]; }
@@ -87,6 +90,8 @@ class Hart {
   uint32_t fflags_ = 0, frm_ = 0;
   uint32_t mstatus_ = 0, mtvec_ = 0, mepc_ = 0, mcause_ = 0, mtval_ = 0, mscratch_ = 0, mie_ = 0;
   uint64_t instret_offset_ = 0, cycle_offset_ = 0, stall_cycles_ = 0;
+  const uint64_t* cycle_clock_ = nullptr;
+  uint64_t cycles_now() const { return cycle_clock_ ? *cycle_clock_ : instructions_retired() + stall_cycles_; }
   const char* trap_detail_ = nullptr;  // why the last illegal-instruction trap came from the hook
 
   std::array<uint64_t, kOpCount> op_counts_{};

@@ -38,7 +38,7 @@ uint64_t Hart<Memory>::instructions_retired() const {
 template <class Memory>
 bool Hart<Memory>::read_csr(uint16_t number, uint32_t& value) const {
   const uint64_t instret = instructions_retired() + instret_offset_;
-  const uint64_t cycle = instructions_retired() + stall_cycles_ + cycle_offset_;
+  const uint64_t cycle = cycles_now() + cycle_offset_;
   switch (number) {
     case csr::kFflags: value = fflags_; return true;
     case csr::kFrm: value = frm_; return true;
@@ -79,7 +79,7 @@ bool Hart<Memory>::write_csr(uint16_t number, uint32_t value) {
   // retires and counts as usual.
   const uint64_t retired = instructions_retired();
   const uint64_t instret = retired + instret_offset_;
-  const uint64_t cycle = retired + stall_cycles_ + cycle_offset_;
+  const uint64_t cycle = cycles_now() + cycle_offset_;
   switch (number) {
     case csr::kFflags: fflags_ = value & 0x1Fu; break;
     case csr::kFrm: frm_ = value & 0x7u; break;

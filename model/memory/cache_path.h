@@ -61,7 +61,9 @@ class CachePath {
 
   // Checks, data path, bank slot and the access's own counts. `accepted`: the cache serves
   // this kind of request. False when refused (the response is set; nothing was counted).
-  bool begin(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, bool accepted, Request& r);
+  // `ext`: the payload's extension (the caller looked it up already), or null.
+  bool begin(tlm::tlm_generic_payload& gp, transport::MemoryExtension* ext, sc_core::sc_time& delay, bool accepted,
+             Request& r);
   // A read that allocates on a miss (L1 loads and fetches). `model_misses` false: always a hit.
   Result read_allocate(Request& r, bool model_misses, transport::ServedBy hit_level,
                        transport::ServedBy merged_level);
@@ -95,8 +97,9 @@ class CachePath {
 };
 
 // The per-access steps are inline: every cache's b_transport is one hot function.
-inline bool CachePath::begin(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay, bool accepted, Request& r) {
-  r.ext = gp.get_extension<transport::MemoryExtension>();
+inline bool CachePath::begin(tlm::tlm_generic_payload& gp, transport::MemoryExtension* ext, sc_core::sc_time& delay,
+                             bool accepted, Request& r) {
+  r.ext = ext;
   r.addr = gp.get_address();
   r.bytes = gp.get_data_length();
   if (!accepted) {

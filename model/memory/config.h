@@ -10,18 +10,13 @@
 
 namespace strata::memory {
 
-enum class WritePolicy : uint8_t {
-  // Stores go through to the next level and never allocate; a present line stays valid
-  // (the data lives in the backing store). TRaX's policy; see docs/memory-system.md.
-  kWriteAround,
-};
-
+// Write-around: stores go through to the next level and never allocate; a present line stays
+// valid (the data lives in the backing store). TRaX's policy; see docs/memory-system.md.
 struct L1DataCacheConfig {
   uint32_t size_bytes = 32 * 1024;
   uint32_t banks = 8;
   uint32_t line_bytes = 64;
   uint32_t hit_latency_cycles = 1;
-  WritePolicy write_policy = WritePolicy::kWriteAround;
   // Must exceed the LT quantum plus the longest wait a request can see, queueing included:
   // 16384 keeps every booking of a 128-TM Sibenik frame inside (fidelity.calendar_overflow_bookings).
   uint32_t calendar_horizon_cycles = 16384;

@@ -20,10 +20,10 @@ void L1DataCache::trace(sc_core::sc_trace_file* file, const TraceWindow& window)
 }
 
 void L1DataCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
-  const auto* ext = gp.get_extension<transport::MemoryExtension>();
+  auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
   CachePath::Request r;
-  if (!path_.begin(gp, delay, access == AccessClass::kDataLoad || access == AccessClass::kDataStore, r)) return;
+  if (!path_.begin(gp, ext, delay, access == AccessClass::kDataLoad || access == AccessClass::kDataStore, r)) return;
   CachePath::Result res{r.answer, ServedBy::kL1, true, false};
   if (r.store) {
     // Write-around: the store goes on to the next level; the TP does not wait for it.

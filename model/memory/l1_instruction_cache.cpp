@@ -24,12 +24,12 @@ void L1InstructionCache::trace(sc_core::sc_trace_file* file, const TraceWindow& 
 }
 
 void L1InstructionCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
-  const auto* ext = gp.get_extension<transport::MemoryExtension>();
+  auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
   CachePath::Request r;
   const bool accepted =
       !gp.is_write() && (access == AccessClass::kInstructionFetch || access == AccessClass::kDataLoad);
-  if (!path_.begin(gp, delay, accepted, r)) return;
+  if (!path_.begin(gp, ext, delay, accepted, r)) return;
   const CachePath::Result res = path_.read_allocate(r, config_.model_misses, ServedBy::kL1, ServedBy::kL1Merged);
   path_.finish(gp, delay, r, res);
 }

@@ -34,10 +34,10 @@ L2Cache::L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMem
 void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { path_.trace().open(file, name(), window); }
 
 void L2Cache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
-  const auto* ext = gp.get_extension<transport::MemoryExtension>();
+  auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
   CachePath::Request r;
-  if (!path_.begin(gp, delay, !transport::is_stream_access(access) && gp.get_command() != tlm::TLM_IGNORE_COMMAND, r))
+  if (!path_.begin(gp, ext, delay, !transport::is_stream_access(access) && gp.get_command() != tlm::TLM_IGNORE_COMMAND, r))
     return;
   CacheCore& core = path_.core();
   CacheCounters& c = *r.c;

@@ -59,6 +59,8 @@ class TpTiming {
   IssueTiming complete_memory(const iss::Decoded& d, Cycle issue, Cycle result_ready);
 
   Cycle next_issue() const { return next_slot_; }
+  // The same, as a clock an ISS can read (Hart::use_cycle_clock): this TP's mcycle.
+  const Cycle* clock() const { return &next_slot_; }
   Cycle int_ready(unsigned r) const { return x_ready_[r & 31]; }
   Cycle fp_ready(unsigned r) const { return f_ready_[r & 31]; }
   const TpStats& stats() const { return stats_; }

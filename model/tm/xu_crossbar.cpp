@@ -115,7 +115,7 @@ void XuCrossbar::count(XuClass cls, Cycle start) {
   use.busy_unit_cycles += unit(cls).occupancy;
 }
 
-void XuCrossbar::slide_window(Cycle earliest) {
+void XuCrossbar::slide_window_slow(Cycle earliest) {
   // Slide in steps of history_ rather than every cycle: retiring touches every calendar. The
   // window never passes the floor (the oldest cycle a user may still ask for) unless a
   // request would otherwise fall beyond the horizon.
@@ -125,7 +125,8 @@ void XuCrossbar::slide_window(Cycle earliest) {
   }
   if (earliest < window_base_ + 2 * history_) return;
   const Cycle wanted = earliest - history_;
-  const Cycle room = Cycle{config_.xu_horizon_cycles} / 2;  // keep half the horizon for bookings ahead
+  // Bookings reach at most an occupancy (<= horizon / 16, validated) past their start.
+  const Cycle room = Cycle{config_.xu_horizon_cycles} - Cycle{config_.xu_horizon_cycles} / 8;
   const Cycle must = earliest > room ? earliest - room : 0;
   retire_to(std::max(std::min(wanted, floor_), must));
 }

@@ -101,7 +101,12 @@ class XuCrossbar {
   // The earliest cycle >= from after which at most `keep` units of u are still in use.
   Cycle drain_end(const Unit& u, uint32_t keep, Cycle from) const;
   GeneralUnits taken_by(PipelineMode mode) const;
-  void slide_window(Cycle earliest);
+  // Inline: every request passes here, and almost all fall inside the window.
+  void slide_window(Cycle earliest) {
+    if (earliest >= window_base_ && earliest < window_base_ + 2 * history_) return;
+    slide_window_slow(earliest);
+  }
+  void slide_window_slow(Cycle earliest);
   void retire_to(Cycle now);
   void require_mode(PipelineMode mode, const char* op) const;
   void count(XuClass cls, Cycle start);
