@@ -29,6 +29,8 @@ Cycle ReservationCalendar::first_free(Cycle from) const {
   const Cycle end = base_ + horizon_;
   Cycle c = from;
   while (c < end) {
+    if (c >= run_lo_ && c < run_hi_) c = run_hi_;  // a known full run: skip it whole
+    if (c >= end) break;
     const uint32_t slot = static_cast<uint32_t>(c & mask_);
     const uint32_t bit = slot & 63;
     const uint64_t below = bit == 0 ? 0 : ((uint64_t{1} << bit) - 1);
@@ -56,10 +58,22 @@ uint32_t ReservationCalendar::claim(Cycle c) {
 Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
   if (units == 0) units = 1;
   Cycle c = std::max(earliest, base_);
+  // A saturated resource has a long run of full cycles ahead of the present, and every request
+  // would scan it: skip the run remembered from the last search.
+  if (c >= run_lo_ && c < run_hi_) c = run_hi_;
+  const Cycle asked = c;
   Booking b;
   bool started = false;
   while (units > 0) {
     const Cycle f = first_free(c);
+    if (!started && f != kNone) {
+      // [asked, f) is full, and stays so (only retiring frees a cycle). Remember it if it
+      // extends the run or is long enough to be worth skipping next time.
+      if (asked == run_hi_ || f - asked >= 64) {
+        if (asked != run_hi_) run_lo_ = asked;
+        run_hi_ = f;
+      }
+    }
     if (f == kNone) {
       // Beyond the window: serve after everything already there, in arrival order.
       const Cycle start = std::max({c, base_ + horizon_, overflow_tail_});
@@ -86,6 +100,7 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
       b.first = f;
       started = true;
     }
+    if (f == run_hi_ && (full_[slot >> 6] & bit)) run_hi_ = f + 1;  // the run grew by this cycle
     b.last = f;
     c = f + 1;
   }

@@ -80,6 +80,7 @@ class ReservationCalendar {
   std::vector<uint16_t> used_;  // units per slot; empty when capacity_ == 1 (the bit says it)
   Cycle base_ = 0;
   Cycle latest_end_ = 0;
+  Cycle run_lo_ = 0, run_hi_ = 0;  // [lo, hi): cycles known to be full (a search's skip)
   Cycle overflow_head_ = 0;  // [head, tail): hull of bookings placed beyond the window
   Cycle overflow_tail_ = 0;
   uint64_t overflows_ = 0;

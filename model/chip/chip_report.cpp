@@ -169,7 +169,7 @@ std::string FrameReport::summary() const {
                 ull(overflows));
   if (late > 0)
     s += format("warning        %llu XU requests came later than the crossbar's history: they were timed at the "
-                "oldest remembered cycle, so XU contention is approximate; raise tm.xu_history_cycles\n",
+                "oldest remembered cycle, so XU contention is approximate; raise tm.xu_horizon_cycles\n",
                 ull(late));
   if (reordered > 0 && cfg.timing.mode == transport::TimingMode::kPrecise)
     s += format("warning        %llu cache lookups arrived out of time order in precise mode, which should never "

@@ -194,7 +194,7 @@ void Chip::register_stats() {
                    },
                    true);
   fidelity.derived("xu_late_requests", Unit::kCount,
-                   "XU requests older than the crossbar remembered. Nonzero: raise tm.xu_history_cycles.",
+                   "XU requests older than the crossbar remembered. Nonzero: raise tm.xu_horizon_cycles.",
                    [](const Scope& s) { return s.root().number("xu.late_requests"); }, true);
   fidelity.derived("reordered_lookups", Unit::kCount,
                    "Cache lookups that arrived out of time order and were answered as time order would.",

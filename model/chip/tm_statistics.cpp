@@ -90,7 +90,7 @@ void ThreadMultiprocessor::register_stats() {
   xu.count("reconfiguring_cycles", &x.reconfiguring_cycles, Unit::kCycles, "Switching time after the drains.");
   xu.count("late_requests", &x.late_requests, Unit::kCount,
            "Fidelity: requests for a cycle the crossbar's calendars had forgotten, served at the oldest "
-           "remembered cycle. Nonzero means tm.xu_history_cycles is too small; must be 0.",
+           "remembered cycle. Nonzero means tm.xu_horizon_cycles is too small; must be 0.",
            Basis::kExact);
   xu.level("calendar_overflow_bookings", [this] { return xus_.overflow_bookings(); }, Unit::kCount,
            "Fidelity: bookings beyond the calendars' horizon; must be 0.");
