@@ -22,6 +22,8 @@ enum class AccessClass : uint8_t {
   kStreamSize,      // result = rays in `treelet`'s buffer
   kStreamAssign,    // result = the TM's treelet (kNoTreelet when every buffer is empty)
   kStreamCapacity,  // result = rays the stream memory holds
+  kStreamPathRead,  // on-chip path state: a load from the path records beside the rays
+  kStreamPathWrite, // ... and a store
 };
 
 constexpr bool is_stream_access(AccessClass a) { return a >= AccessClass::kStreamPush; }
@@ -81,9 +83,10 @@ struct CountedPair {
 // The data class of an access an initiator did not classify: fetches hold instructions and
 // stream pushes and pops move rays; anything else is unknown.
 constexpr DataClass default_data_class(AccessClass a) {
-  return a == AccessClass::kInstructionFetch ? DataClass::kInstructions
-         : is_stream_access(a)              ? DataClass::kRays
-                                            : DataClass::kOther;
+  return a == AccessClass::kInstructionFetch                                       ? DataClass::kInstructions
+         : a == AccessClass::kStreamPathRead || a == AccessClass::kStreamPathWrite ? DataClass::kPathState
+         : is_stream_access(a)                                                    ? DataClass::kRays
+                                                                                   : DataClass::kOther;
 }
 inline DataClass data_class_of(const MemoryExtension* ext) { return ext ? ext->data : DataClass::kOther; }
 

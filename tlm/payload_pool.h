@@ -55,7 +55,8 @@ class PooledPayload {
 inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                            uint32_t initiator_id, uint32_t tm_id, uint32_t treelet = kNoTreelet,
                            bool timing_only = false, bool functional = false, bool uncounted = false) {
-  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush;
+  const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush ||
+                     access == AccessClass::kStreamPathWrite;
   gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
   gp->set_address(addr);
   gp->set_data_ptr(static_cast<unsigned char*>(data));

@@ -53,6 +53,9 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.guest_high = layout_.end;
   env.stacks_base = static_cast<uint32_t>(layout_.stacks);
   env.data_classes = &data_classes_;
+  env.path_state_on_chip = config_.design.streams && config_.design.path_state == PathStatePlacement::kOnChip;
+  env.path_begin = layout_.path_table;
+  env.path_end = layout_.path_table + uint64_t{layout_.path_slots} * kernels::kPathRecordBytes;
   env.report_cycle = &report_cycle_;
   for (uint32_t t = 0; t < config_.tms; ++t) {
     const std::string n = std::to_string(t);

@@ -1,5 +1,7 @@
 #include "model/chip/chip_config.h"
 
+#include "firmware/abi/frame_abi.h"
+
 #include <fstream>
 
 #include "model/memory/stream_sram.h"
@@ -46,6 +48,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);
   b.bind("design.streams", &design.streams);
   b.bind("design.pipelines", &design.pipelines);
+  b.bind_enum("design.path_state", &design.path_state, {"on-chip", "dram"});
   b.bind("clock_ghz", &clock_ghz);
   b.bind("tms", &tms);
   b.bind("tps_per_tm", &tps_per_tm);
@@ -154,6 +157,9 @@ void ChipConfig::finalize() {
   tm.tps = tps_per_tm;
   stream.tms = tms;
   stream.threads = threads();
+  // Path records on chip take their bytes from the stream memory, one per ray it can hold.
+  stream.path_record_bytes =
+      design.streams && design.path_state == PathStatePlacement::kOnChip ? kernels::kPathRecordBytes : 0;
   // Each TM binds its L1 data cache, its L1 instruction cache and its stream port.
   interconnect.tm_ports = 3 * tms;
   interconnect.l2_banks = l2.banks;

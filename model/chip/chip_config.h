@@ -16,10 +16,23 @@
 
 namespace strata::chip {
 
+// Where the streaming kernels keep what a path needs between its rays (throughput, radiance,
+// random state, the pending bounce: one PathRecord per path in flight).
+enum class PathStatePlacement : uint8_t {
+  // In a region carved from the stream memory's SRAM beside the rays (ARCHITECTURE.md: ray
+  // state never leaves the chip). Its loads and stores go to the stream memory through the
+  // interconnect, take its ports and cost its energy per access; the ray capacity shrinks by
+  // the records' bytes. Never in the L1, L2 or DRAM.
+  kOnChip,
+  // In a table in guest memory like any data: through the L1 data cache, the L2 and DRAM.
+  kDram,
+};
+
 struct DesignConfig {
   std::string name = "strata-pipelines";
   bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)
   bool pipelines = true;  // fused box/triangle pipelines (else: general-purpose XUs only)
+  PathStatePlacement path_state = PathStatePlacement::kOnChip;  // streaming designs only
 };
 
 struct TimingConfig {

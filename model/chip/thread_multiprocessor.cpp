@@ -212,6 +212,18 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     if (counting()) ++counters_.local_accesses;
     return at + 1;  // TP local memory: one cycle, no cache, no contention
   }
+  if (env_.path_state_on_chip && r.first >= env_.path_begin && r.first < env_.path_end) {
+    // On-chip path state: one access to the stream memory's SRAM, never the L1 (a record
+    // field is a word; a wider one is one port access up to a ray's width).
+    if (r.last > env_.path_end || r.last - r.first > 48) {
+      fail(tp, "path-state access crosses the path records' end or is wider than 48 bytes");
+      return at;
+    }
+    if (counting()) ++counters_.path_state_requests;
+    uint8_t scratch[48];
+    return transact(stream_port, r.store ? AccessClass::kStreamPathWrite : AccessClass::kStreamPathRead, r.first,
+                    scratch, r.last - r.first, at, true, transport::kNoTreelet, tp, nullptr);
+  }
   // One request per cache line touched (a pipeline operand may straddle two lines); they
   // issue together and the access completes with the last of them.
   const uint32_t line = config_.l1d.line_bytes;

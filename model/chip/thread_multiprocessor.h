@@ -55,6 +55,9 @@ struct TmEnvironment {
   uint64_t guest_high = 0;   // one past the highest
   uint32_t stacks_base = 0;  // thread t's stack: [stacks_base + t * stack, + stack)
   const transport::DataClassMap* data_classes = nullptr;  // what each data address holds (may be null)
+  // On-chip path state: loads and stores to [path_begin, path_end) go to the stream memory.
+  bool path_state_on_chip = false;
+  uint64_t path_begin = 0, path_end = 0;
   // The cycle statistics are taken at (the frame's end): the XUs count each mode's cycles up to it.
   const transport::Cycle* report_cycle = nullptr;
 };
@@ -67,6 +70,7 @@ struct TmCounters {
   uint64_t icache_fetch_requests = 0;  // line changes that went to the I-cache
   uint64_t local_accesses = 0;         // stack accesses served by TP local memory
   uint64_t l1_requests = 0;
+  uint64_t path_state_requests = 0;  // on-chip path state: loads and stores sent to the stream memory
   uint64_t stream_requests = 0, stream_push_full = 0;
   uint64_t global_register_ops = 0;
   uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode

@@ -41,6 +41,8 @@ void ThreadMultiprocessor::register_stats() {
            Basis::kDataOps);
   in.count("stream_requests", &k.stream_requests, Unit::kCount, "Stream-memory operations the TPs issued.",
            Basis::kStreamOps);
+  in.count("path_state_requests", &k.path_state_requests, Unit::kCount,
+           "Loads and stores of on-chip path state, sent to the stream memory instead of the L1.", Basis::kDataOps);
   in.count("stream_push_full", &k.stream_push_full, Unit::kCount,
            "Pushes the stream memory refused as full (the TP retries; exact).", Basis::kExact);
   in.count("global_register_ops", &k.global_register_ops, Unit::kCount,

@@ -73,6 +73,9 @@ struct StreamMemoryConfig {
   SchedulingPolicy policy = SchedulingPolicy::kFullestFirst;
   bool sticky = true;  // a TM keeps its treelet while that buffer has rays
   uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
+  // Bytes of path state kept beside each ray slot (0: none; the chip sets it when path state
+  // lives on chip). They come out of size_bytes, so the ray capacity shrinks.
+  uint32_t path_record_bytes = 0;
   // Unset: the L2 of the same size (STRaTA: a stream access costs about an L2 access).
   std::optional<double> access_energy_nj;
   void validate() const;

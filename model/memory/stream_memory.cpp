@@ -20,7 +20,7 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
   using stats::Unit;
   const Counters& c = counters_.counted;
   stats::Group& g = stats_;
-  g.count("accesses", &c.accesses, Unit::kCount, "Operations: pushes, pops and queries.");
+  g.count("accesses", &c.accesses, Unit::kCount, "Operations: pushes, pops, queries and path-state loads and stores.");
   g.count("pushes", &c.pushes, Unit::kCount, "Ray pushes, refused ones included.");
   g.count("pops", &c.pops, Unit::kCount, "Ray pops, empty ones included.");
   g.count("queries", &c.queries, Unit::kCount, "Size, assign and capacity queries (head/count region only).");
@@ -29,11 +29,17 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
   g.count("assignments", &c.assignments, Unit::kCount, "Treelet buffers handed to TMs.");
   g.count("port_conflicts", &c.port_conflicts, Unit::kCount, "Pushes and pops that found every port busy.");
   g.count("conflict_cycles", &c.conflict_cycles, Unit::kCycles, "Cycles pushes and pops waited for a port.");
-  g.count("bytes_read", &c.bytes_read, Unit::kBytes, "Bytes of the rays popped.");
-  g.count("bytes_written", &c.bytes_written, Unit::kBytes, "Bytes of the rays pushed.");
+  g.count("path_reads", &c.path_reads, Unit::kCount,
+          "Loads from the path records kept on chip (design.path_state = on-chip).", stats::Basis::kDataOps);
+  g.count("path_writes", &c.path_writes, Unit::kCount, "Stores to the path records kept on chip.",
+          stats::Basis::kDataOps);
+  g.count("bytes_read", &c.bytes_read, Unit::kBytes, "Bytes read: rays popped and path state loaded.");
+  g.count("bytes_written", &c.bytes_written, Unit::kBytes, "Bytes written: rays pushed and path state stored.");
   g.level("stored", [this] { return uint64_t{sram_.stored()}; }, Unit::kCount, "Rays stored when the frame ended.");
   g.level("capacity", [this] { return uint64_t{sram_.capacity()}; }, Unit::kCount,
-          "Rays the memory holds (its size less the heads, links and thread bits).");
+          "Rays the memory holds (its size less the heads, links, thread bits and on-chip path records).");
+  g.level("path_record_bytes", [this] { return uint64_t{layout().path_record_bytes}; }, Unit::kBytes,
+          "Bytes of path state beside each ray slot (0: path state is not kept here).");
   g.level("calendar_overflow_bookings", [this] { return ports_.overflow_bookings(); }, Unit::kCount,
           "Fidelity: port bookings beyond the calendar horizon, served late in arrival order; must be 0.");
   g.count("energy_nj", &c.energy_nj, Unit::kNanojoules, "Energy of the operations.");
@@ -56,8 +62,16 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   }
   const AccessClass access = ext->access;
   const bool moves_ray = access == AccessClass::kStreamPush || access == AccessClass::kStreamPop;
+  const bool path = access == AccessClass::kStreamPathRead || access == AccessClass::kStreamPathWrite;
   if (moves_ray && (gp.get_data_length() != StreamLayout::kRayBytes || gp.get_data_ptr() == nullptr)) {
     gp.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return;
+  }
+  // Path state rides in the SRAM beside the rays: one port access moves up to a ray's width.
+  if (path && (layout().path_record_bytes == 0 || gp.get_data_length() == 0 ||
+               gp.get_data_length() > StreamLayout::kRayBytes)) {
+    gp.set_response_status(path && layout().path_record_bytes == 0 ? tlm::TLM_COMMAND_ERROR_RESPONSE
+                                                                   : tlm::TLM_BURST_ERROR_RESPONSE);
     return;
   }
   if (ext->tm_id >= scheduler_.tms()) {
@@ -75,7 +89,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   ++c.accesses;
   c.energy_nj += energy_per_access_;
   Cycle done = t + config_.query_latency_cycles;
-  if (moves_ray && !ext->functional) {
+  if ((moves_ray || path) && !ext->functional) {
     ports_.retire_before(now);
     const Cycle slot = ports_.book(t, 1).first;
     if (slot > t) {
@@ -118,6 +132,16 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       if (status == StreamStatus::kEmpty) ++c.empty_pops;
       break;
     }
+    case AccessClass::kStreamPathRead:
+    case AccessClass::kStreamPathWrite: {
+      // The data moved through the chip's backing store (the TP executed the load or store);
+      // the SRAM books the port and the energy.
+      const bool write = access == AccessClass::kStreamPathWrite;
+      ++(write ? c.path_writes : c.path_reads);
+      (write ? c.bytes_written : c.bytes_read) += gp.get_data_length();
+      result = 1;
+      break;
+    }
     case AccessClass::kStreamSize:
       ++c.queries;
       if (ext->treelet < layout().treelets) result = sram_.size(ext->treelet);
@@ -136,6 +160,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   ClassTraffic& k = traffic(c.by_data, ext->data);
   ++k.accesses;
   if (result == 1 && moves_ray) k.bytes += StreamLayout::kRayBytes;
+  if (path) k.bytes += gp.get_data_length();
 
   if (trace_.enabled()) {
     trace_.level(tr_stored_, static_cast<double>(sram_.stored()), now);

@@ -8,6 +8,8 @@
 //   size     ext.treelet; result = rays in it.
 //   assign   ext.tm_id; result = the TM's treelet, or kNoTreelet when all are empty.
 //   capacity result = rays the memory holds.
+//   path read/write  up to 48 B of on-chip path state (timing only: the TP moved the data);
+//            refused unless the layout keeps path records (path_record_bytes).
 // ext.result is also 1/0 for push and pop, as the strata.streampush/pop instructions return.
 //
 // Time: push and pop take one of `ports` SRAM ports for a cycle (a reservation calendar, so
@@ -37,6 +39,7 @@ class StreamMemory : public sc_core::sc_module {
   struct Counters {
     uint64_t accesses = 0, pushes = 0, pops = 0, queries = 0;
     uint64_t full_rejections = 0, empty_pops = 0, assignments = 0, port_conflicts = 0, conflict_cycles = 0;
+    uint64_t path_reads = 0, path_writes = 0;  // on-chip path state
     uint64_t bytes_read = 0, bytes_written = 0;
     double energy_nj = 0.0;
     DataTraffic by_data{};

@@ -15,13 +15,17 @@ StreamLayout make_stream_layout(const StreamMemoryConfig& config) {
   l.counts_offset = l.heads_offset + 4ull * config.treelets;
   l.credits_offset = l.counts_offset + 4ull * config.treelets;
   l.entries_offset = l.credits_offset + ((uint64_t{config.threads} + 31) / 32) * 4;
-  if (l.entries_offset + StreamLayout::kEntryBytes > l.size_bytes)
+  l.path_record_bytes = config.path_record_bytes;
+  const uint64_t per_ray = StreamLayout::kEntryBytes + uint64_t{config.path_record_bytes};
+  if (l.entries_offset + per_ray > l.size_bytes)
     throw std::invalid_argument("stream.size_bytes: " + std::to_string(config.size_bytes) +
                                 " bytes cannot hold the heads, counts and credit bits of " +
                                 std::to_string(config.treelets) + " treelets and " +
-                                std::to_string(config.threads) + " threads plus one ray");
-  const uint64_t entries = (l.size_bytes - l.entries_offset) / StreamLayout::kEntryBytes;
+                                std::to_string(config.threads) + " threads plus one ray" +
+                                (config.path_record_bytes ? " and its path record" : ""));
+  const uint64_t entries = (l.size_bytes - l.entries_offset) / per_ray;
   l.capacity = static_cast<uint32_t>(entries < StreamSram::kNil ? entries : StreamSram::kNil - 1);
+  l.path_records_offset = l.entries_offset + uint64_t{l.capacity} * StreamLayout::kEntryBytes;
   return l;
 }
 

@@ -6,6 +6,7 @@
 //   [head pointer 4 B x treelets][ray count 4 B x treelets]
 //   [holds-a-ray bit x threads, rounded up to 4 B]
 //   [entry 0: ray 48 B + link 4 B][entry 1] ... [entry capacity-1]
+//   [path record 0] ... [path record capacity-1]   (only with path state on chip)
 //
 // Entries never used yet are taken from a bump pointer, recycled ones from the free list, so
 // reset costs nothing per entry. The lists ARE the data: push copies the 48 bytes in, pop
@@ -36,6 +37,10 @@ struct StreamLayout {
   uint32_t threads = 0;
   uint64_t heads_offset = 0, counts_offset = 0, credits_offset = 0, entries_offset = 0;
   uint32_t capacity = 0;  // rays
+  // On-chip path state: one record per ray slot after the entries (its data lives in the
+  // chip's backing store; the region only takes its bytes here).
+  uint32_t path_record_bytes = 0;
+  uint64_t path_records_offset = 0;
   // Bytes not holding ray payload (registers, heads, counts, credit bits, links, slack) / S.
   double overhead_fraction() const {
     return 1.0 - static_cast<double>(uint64_t{capacity} * kRayBytes) / static_cast<double>(size_bytes);

@@ -16,10 +16,13 @@ struct Design {
   const char* name;
   bool streams, pipelines;
   const char* kernel;
+  PathStatePlacement path_state;
 };
-const Design kDesigns[] = {{"trax", false, false, "baseline"},
-                           {"streams", true, false, "streams"},
-                           {"pipelines", true, true, "streams_pipelines"}};
+const Design kDesigns[] = {{"trax", false, false, "baseline", PathStatePlacement::kDram},
+                           {"streams", true, false, "streams", PathStatePlacement::kOnChip},
+                           {"streams_pathdram", true, false, "streams", PathStatePlacement::kDram},
+                           {"pipelines", true, true, "streams_pipelines", PathStatePlacement::kOnChip},
+                           {"pipelines_pathdram", true, true, "streams_pipelines", PathStatePlacement::kDram}};
 
 using Param = std::tuple<int, transport::TimingMode, const char*>;
 
@@ -40,7 +43,7 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
   }
   SmallFrame frame(scene, 32, d.kernel);
   ChipConfig config = small_chip(mode, 2, 8);
-  config.design = {d.name, d.streams, d.pipelines};
+  config.design = {d.name, d.streams, d.pipelines, d.path_state};
   config.stream.size_bytes = 512 * 1024;
   config.stream.treelets = frame.image.header().treelet_count;
   config.finalize();
@@ -68,6 +71,21 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
     EXPECT_EQ(stored, popped);
     // Every ray generated went through the stream memory at least once.
     EXPECT_GE(stored, rays.rays[0] + rays.rays[1] + rays.rays[2]);
+    // Path state lives where the design says, and nowhere else.
+    const uint64_t on_chip = s["by_data"]["path_state"]["accesses"].get<uint64_t>();
+    uint64_t off_chip = 0;
+    for (const char* level : {"l1d", "l2", "dram"})
+      off_chip += r["memory"][level]["by_data"]["path_state"]["accesses"].get<uint64_t>();
+    if (d.path_state == PathStatePlacement::kOnChip) {
+      EXPECT_GT(on_chip, 0u);
+      EXPECT_EQ(on_chip, s["path_reads"].get<uint64_t>() + s["path_writes"].get<uint64_t>());
+      EXPECT_EQ(off_chip, 0u) << "path state reached the L1, L2 or DRAM";
+      EXPECT_EQ(s["path_record_bytes"], kernels::kPathRecordBytes);
+    } else {
+      EXPECT_EQ(on_chip, 0u);
+      EXPECT_GT(off_chip, 0u);
+      EXPECT_EQ(s["path_record_bytes"], 0);
+    }
   } else {
     EXPECT_EQ(r["memory"]["stream"]["pushes"], 0);
   }
@@ -88,7 +106,7 @@ std::string param_name(const ::testing::TestParamInfo<Param>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Chip, Designs,
-                         ::testing::Combine(::testing::Values(0, 1, 2),
+                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
                                             ::testing::Values(transport::TimingMode::kLooselyTimed,
                                                               transport::TimingMode::kPrecise),
                                             ::testing::Values("cornell", "sibenik")),
