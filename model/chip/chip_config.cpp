@@ -104,6 +104,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.l2.calendar_horizon_cycles", &l2.calendar_horizon_cycles);
   b.bind("memory.l2.access_energy_nj", &l2.access_energy_nj);
   b.bind("memory.stream.size_bytes", &stream.size_bytes);
+  b.bind("memory.stream.banks", &stream.banks);
   b.bind("memory.stream.ports", &stream.ports);
   b.bind("memory.stream.access_latency_cycles", &stream.access_latency_cycles);
   b.bind("memory.stream.query_latency_cycles", &stream.query_latency_cycles);
@@ -164,6 +165,9 @@ void ChipConfig::finalize() {
   interconnect.tm_ports = 3 * tms;
   interconnect.l2_banks = l2.banks;
   interconnect.l2_line_bytes = l2.line_bytes;
+  // The stream memory's banks each have a link of the crossbar's width; it books them itself.
+  interconnect.stream_link = false;
+  stream.link_bytes_per_cycle = interconnect.link_bytes_per_cycle;
   checked("tm", [&] { tm.validate(); });
   checked("memory.l1d", [&] { l1d.validate(); });
   checked("memory.l1i", [&] { l1i.validate(); });

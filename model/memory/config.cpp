@@ -64,6 +64,8 @@ void StreamMemoryConfig::validate() const {
   need_positive("stream.treelets", treelets);
   need_positive("stream.threads", threads);
   need_positive("stream.tms", tms);
+  need_positive("stream.banks", banks);
+  if (banks > 1024) bad("stream.banks", "must be at most 1024", banks);
   need_positive("stream.ports", ports);
   if (ports > 65535) bad("stream.ports", "must be at most 65535", ports);
   need_positive("stream.calendar_horizon_cycles", calendar_horizon_cycles);

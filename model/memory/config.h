@@ -67,7 +67,15 @@ struct StreamMemoryConfig {
   uint32_t treelets = 1024;          // head pointers carved out of the SRAM
   uint32_t threads = 4096;           // one "holds a ray" bit per thread, also in the SRAM
   uint32_t tms = 128;
-  uint32_t ports = 4;                // ray reads/writes per cycle
+  // The SRAM's banks, each with its own ports and its own link from the crossbar. Ray entries
+  // are interleaved over the banks, path-state rows (64 B) too; a push takes the entry the
+  // allocator hands out, a pop the one it finds. ARCHITECTURE.md: the stream memory is carved
+  // from the L2's SRAM, so the STRaTA designs give it the L2's banking (sim/configs).
+  uint32_t banks = 1;
+  uint32_t ports = 4;                // ray and path-state reads/writes per cycle, per bank
+  // Width of each bank's link from the crossbar (0: the stream memory books no link; the
+  // interconnect does, as one link). The chip sets it from the interconnect's link width.
+  uint32_t link_bytes_per_cycle = 0;
   uint32_t access_latency_cycles = 3;
   uint32_t query_latency_cycles = 1;  // size, assign, capacity: head/count region only
   SchedulingPolicy policy = SchedulingPolicy::kFullestFirst;
@@ -100,6 +108,9 @@ struct InterconnectConfig {
   uint32_t l2_line_bytes = 64;  // bank interleaving granule, as in the L2
   uint32_t link_bytes_per_cycle = 64;
   uint32_t hop_latency_cycles = 1;  // each way
+  // Book a link for stream-memory traffic here (one for all of it). The chip turns it off:
+  // the stream memory books its own banks' links (StreamMemoryConfig::link_bytes_per_cycle).
+  bool stream_link = true;
   uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   // STRaTA's CACTI figures include the arrays' own routing; the crossbar wires are not in
   // its table, so they cost nothing unless a figure is given.

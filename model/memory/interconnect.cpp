@@ -76,7 +76,8 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
     c.conflict_cycles += granted - t;
   }
   Cycle arrive = granted + config_.hop_latency_cycles;
-  if (data_in) {
+  const bool book_link = !stream || config_.stream_link;  // else the stream memory books its bank's
+  if (data_in && book_link) {
     const transport::Booking b = link.book(arrive, flits);
     if (b.first > arrive) {
       ++c.link_conflicts;
@@ -88,7 +89,7 @@ void Interconnect::b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::
   sc_core::sc_time d = clock_.delay_until_at(stamp, arrive);
   (stream ? stream_side : l2_side)->b_transport(gp, d);
   Cycle done = clock_.request_cycle_at(stamp, d);
-  if (!data_in) {
+  if (!data_in && book_link) {
     const transport::Booking b = link.book(done, flits);
     if (b.first > done) {
       ++c.link_conflicts;

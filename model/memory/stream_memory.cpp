@@ -1,5 +1,8 @@
 #include "model/memory/stream_memory.h"
 
+#include <algorithm>
+#include <string>
+
 namespace strata::memory {
 
 using transport::AccessClass;
@@ -14,7 +17,7 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
       energy_per_access_(config.energy_per_access_nj()),
       sram_(make_stream_layout(config)),
       scheduler_(config.treelets, sram_.capacity(), config.tms, config.policy, config.sticky),
-      ports_(config.ports, config.calendar_horizon_cycles),
+
       stats_("stream", "The ray stream memory: treelet buffers of rays (STRaTA designs).", stats::Basis::kStreamOps) {
   target.register_b_transport(this, &StreamMemory::b_transport);
   using stats::Unit;
@@ -40,16 +43,39 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
           "Rays the memory holds (its size less the heads, links, thread bits and on-chip path records).");
   g.level("path_record_bytes", [this] { return uint64_t{layout().path_record_bytes}; }, Unit::kBytes,
           "Bytes of path state beside each ray slot (0: path state is not kept here).");
-  g.level("calendar_overflow_bookings", [this] { return ports_.overflow_bookings(); }, Unit::kCount,
-          "Fidelity: port bookings beyond the calendar horizon, served late in arrival order; must be 0.");
+  g.count("link_conflicts", &c.link_conflicts, Unit::kCount,
+          "Transfers that found their bank's link from the crossbar busy (links modelled here, as on the chip).");
+  g.count("link_conflict_cycles", &c.link_conflict_cycles, Unit::kCycles, "Cycles transfers waited for those links.");
+  g.level("banks", [this] { return uint64_t{config_.banks}; }, Unit::kCount, "SRAM banks, each with its own ports and link.");
+  g.level("calendar_overflow_bookings", [this] { return overflow_bookings(); }, Unit::kCount,
+          "Fidelity: port and link bookings beyond the calendar horizon, served late in arrival order; must be 0.");
   g.count("energy_nj", &c.energy_nj, Unit::kNanojoules, "Energy of the operations.");
   by_data_stats_ = std::make_unique<DataTrafficStats>(c.by_data, false, "Operations on data of this class.",
                                                       "Bytes of this class moved.");
   g.child(&by_data_stats_->group());
+  banks_.reserve(config_.banks);
+  std::vector<const stats::Group*> each;
+  for (uint32_t b = 0; b < config_.banks; ++b) {
+    banks_.push_back(Bank{transport::ReservationCalendar(config_.ports, config_.calendar_horizon_cycles),
+                          transport::ReservationCalendar(1, config_.calendar_horizon_cycles), 0, 0});
+    auto bank = std::make_unique<stats::Group>("bank" + std::to_string(b), "The stream memory's banks.");
+    bank->count("accesses", &banks_.back().accesses, Unit::kCount, "Operations this bank served.");
+    bank->count("conflict_cycles", &banks_.back().conflict_cycles, Unit::kCycles,
+                "Cycles they waited for this bank's ports and link.");
+    each.push_back(bank.get());
+    bank_stats_.push_back(std::move(bank));
+  }
+  g.instances("bank_detail", each, "stream-bank", "stream-memory bank", false);
   tr_stored_ = trace_.add_level("stored_rays");
   tr_pushes_ = trace_.add_rate("pushes_per_cycle");
   tr_pops_ = trace_.add_rate("pops_per_cycle");
   tr_full_ = trace_.add_rate("full_rejections_per_cycle");
+}
+
+uint64_t StreamMemory::overflow_bookings() const {
+  uint64_t n = 0;
+  for (const Bank& b : banks_) n += b.ports.overflow_bookings() + b.link.overflow_bookings();
+  return n;
 }
 
 void StreamMemory::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
@@ -80,32 +106,28 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
     return;
   }
 
-  const Cycle now = clock_.now();
-  const Cycle t = clock_.request_cycle(delay);
+  const uint64_t stamp = sc_core::sc_time_stamp().value();
+  const Cycle now = clock_.now_at(stamp);
+  const Cycle t = clock_.request_cycle_at(stamp, delay);
   // A functional access (sampled timing's fast-forward) moves rays like any other but books
   // no port; neither it nor a warm-up access is counted: the statistics hold the measured
   // parts of the detailed windows only.
   Counters& c = counters_.of(ext);
   ++c.accesses;
   c.energy_nj += energy_per_access_;
-  Cycle done = t + config_.query_latency_cycles;
-  if ((moves_ray || path) && !ext->functional) {
-    ports_.retire_before(now);
-    const Cycle slot = ports_.book(t, 1).first;
-    if (slot > t) {
-      ++c.port_conflicts;
-      c.conflict_cycles += slot - t;
-    }
-    done = slot + config_.access_latency_cycles;
-  }
 
+  // The function first: it decides which bank serves the access (the entry a push is given
+  // or a pop finds, the path-state row, the treelet's head).
   StreamStatus status = StreamStatus::kOk;
   uint32_t result = 0;
+  uint32_t bank = 0;
   switch (access) {
     case AccessClass::kStreamPush: {
       const uint32_t before = ext->treelet < layout().treelets ? sram_.size(ext->treelet) : 0;
-      status = sram_.push(ext->initiator_id, ext->treelet, gp.get_data_ptr());
+      uint32_t entry = StreamSram::kNil;
+      status = sram_.push(ext->initiator_id, ext->treelet, gp.get_data_ptr(), &entry);
       ++c.pushes;
+      bank = entry != StreamSram::kNil ? bank_of_entry(entry) : ext->initiator_id % config_.banks;
       if (status == StreamStatus::kOk) {
         scheduler_.resized(ext->treelet, before, before + 1);
         c.bytes_written += StreamLayout::kRayBytes;
@@ -120,9 +142,12 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       ++c.pops;
       if (treelet == kNoTreelet) {
         status = StreamStatus::kEmpty;
+        bank = ext->tm_id % config_.banks;
       } else {
         const uint32_t before = treelet < layout().treelets ? sram_.size(treelet) : 0;
-        status = sram_.pop(ext->initiator_id, treelet, gp.get_data_ptr());
+        uint32_t entry = StreamSram::kNil;
+        status = sram_.pop(ext->initiator_id, treelet, gp.get_data_ptr(), &entry);
+        bank = entry != StreamSram::kNil ? bank_of_entry(entry) : treelet % config_.banks;
         if (status == StreamStatus::kOk) {
           scheduler_.resized(treelet, before, before - 1);
           c.bytes_read += StreamLayout::kRayBytes;
@@ -135,10 +160,11 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
     case AccessClass::kStreamPathRead:
     case AccessClass::kStreamPathWrite: {
       // The data moved through the chip's backing store (the TP executed the load or store);
-      // the SRAM books the port and the energy.
+      // the SRAM books the port and the energy. Records are interleaved over the banks by row.
       const bool write = access == AccessClass::kStreamPathWrite;
       ++(write ? c.path_writes : c.path_reads);
       (write ? c.bytes_written : c.bytes_read) += gp.get_data_length();
+      bank = static_cast<uint32_t>((gp.get_address() / 64) % config_.banks);
       result = 1;
       break;
     }
@@ -146,17 +172,53 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       ++c.queries;
       if (ext->treelet < layout().treelets) result = sram_.size(ext->treelet);
       else status = StreamStatus::kBadRequest;
+      bank = (ext->treelet < layout().treelets ? ext->treelet : 0) % config_.banks;
       break;
     case AccessClass::kStreamAssign:
       ++c.queries;
       ++c.assignments;
       result = scheduler_.assign(ext->tm_id);
+      bank = ext->tm_id % config_.banks;
       break;
     default:  // kStreamCapacity
       ++c.queries;
       result = sram_.capacity();
       break;
   }
+
+  // Then the time: the data crosses the bank's link (a store's on the way in, a load's on
+  // the way out), and a ray or path-state access takes one of the bank's ports.
+  Bank& k_bank = banks_[bank];
+  Cycle at = t;
+  const bool links = config_.link_bytes_per_cycle > 0 && !ext->functional;
+  const uint32_t flits = links ? std::max<uint32_t>(1, (gp.get_data_length() + config_.link_bytes_per_cycle - 1) /
+                                                           config_.link_bytes_per_cycle)
+                               : 0;
+  auto cross_link = [&](Cycle from) {
+    k_bank.link.retire_before(now);
+    const transport::Booking bk = k_bank.link.book(from, flits);
+    if (bk.first > from) {
+      ++c.link_conflicts;
+      c.link_conflict_cycles += bk.first - from;
+      if (transport::counts(ext)) k_bank.conflict_cycles += bk.first - from;
+    }
+    return bk.end();
+  };
+  if (links && gp.is_write()) at = cross_link(at);
+  Cycle done = at + config_.query_latency_cycles;
+  if ((moves_ray || path) && !ext->functional) {
+    k_bank.ports.retire_before(now);
+    const Cycle slot = k_bank.ports.book(at, 1).first;
+    if (slot > at) {
+      ++c.port_conflicts;
+      c.conflict_cycles += slot - at;
+      if (transport::counts(ext)) k_bank.conflict_cycles += slot - at;
+    }
+    done = slot + config_.access_latency_cycles;
+  }
+  if (links && !gp.is_write()) done = cross_link(done);
+  if (transport::counts(ext)) ++k_bank.accesses;
+
   ClassTraffic& k = traffic(c.by_data, ext->data);
   ++k.accesses;
   if (result == 1 && moves_ray) k.bytes += StreamLayout::kRayBytes;
@@ -172,7 +234,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   ext->result = result;
   ext->served_by = transport::ServedBy::kStream;
   gp.set_response_status(status == StreamStatus::kBadRequest ? tlm::TLM_GENERIC_ERROR_RESPONSE : tlm::TLM_OK_RESPONSE);
-  delay = clock_.delay_until(done);
+  delay = clock_.delay_until_at(stamp, done);
 }
 
 }  // namespace strata::memory

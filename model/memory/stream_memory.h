@@ -30,6 +30,9 @@
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 
+#include <memory>
+#include <vector>
+
 namespace strata::memory {
 
 class StreamMemory : public sc_core::sc_module {
@@ -39,6 +42,7 @@ class StreamMemory : public sc_core::sc_module {
   struct Counters {
     uint64_t accesses = 0, pushes = 0, pops = 0, queries = 0;
     uint64_t full_rejections = 0, empty_pops = 0, assignments = 0, port_conflicts = 0, conflict_cycles = 0;
+    uint64_t link_conflicts = 0, link_conflict_cycles = 0;  // the banks' links (when modelled here)
     uint64_t path_reads = 0, path_writes = 0;  // on-chip path state
     uint64_t bytes_read = 0, bytes_written = 0;
     double energy_nj = 0.0;
@@ -52,6 +56,7 @@ class StreamMemory : public sc_core::sc_module {
   uint32_t size(uint32_t treelet) const { return sram_.size(treelet); }
   const StreamLayout& layout() const { return sram_.layout(); }
   const StreamScheduler& scheduler() const { return scheduler_; }
+  uint64_t overflow_bookings() const;
   const Counters& counters() const { return counters_.counted; }
   const stats::Group& stats() const { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
@@ -66,7 +71,14 @@ class StreamMemory : public sc_core::sc_module {
   transport::Clock clock_;
   StreamSram sram_;
   StreamScheduler scheduler_;
-  transport::ReservationCalendar ports_;
+  struct Bank {
+    transport::ReservationCalendar ports;
+    transport::ReservationCalendar link;  // flits per cycle (1), if links are modelled here
+    uint64_t accesses = 0, conflict_cycles = 0;  // counted accesses only
+  };
+  uint32_t bank_of_entry(uint32_t entry) const { return entry % config_.banks; }
+  std::vector<Bank> banks_;  // never resized (the stats point into it)
+  std::vector<std::unique_ptr<stats::Group>> bank_stats_;
   transport::CountedPair<Counters> counters_;
   stats::Group stats_;
   std::unique_ptr<DataTrafficStats> by_data_stats_;

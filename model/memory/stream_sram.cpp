@@ -56,7 +56,8 @@ void StreamSram::set_credit(uint32_t thread, bool on) {
   write32(kCreditsOffset, on ? credits() + 1 : credits() - 1);
 }
 
-StreamSram::Status StreamSram::push(uint32_t thread, uint32_t treelet, const uint8_t* ray) {
+StreamSram::Status StreamSram::push(uint32_t thread, uint32_t treelet, const uint8_t* ray, uint32_t* taken) {
+  if (taken) *taken = kNil;
   if (treelet >= layout_.treelets || thread >= layout_.threads) return Status::kBadRequest;
   if (holds_credit(thread)) {
     set_credit(thread, false);  // one-for-one replacement: its slot is reserved
@@ -77,10 +78,12 @@ StreamSram::Status StreamSram::push(uint32_t thread, uint32_t treelet, const uin
   write32(head, entry);
   write32(layout_.counts_offset + 4ull * treelet, size(treelet) + 1);
   write32(kStoredOffset, stored() + 1);
+  if (taken) *taken = entry;
   return Status::kOk;
 }
 
-StreamSram::Status StreamSram::pop(uint32_t thread, uint32_t treelet, uint8_t* ray) {
+StreamSram::Status StreamSram::pop(uint32_t thread, uint32_t treelet, uint8_t* ray, uint32_t* taken) {
+  if (taken) *taken = kNil;
   if (treelet >= layout_.treelets || thread >= layout_.threads) return Status::kBadRequest;
   const uint64_t head = layout_.heads_offset + 4ull * treelet;
   const uint32_t entry = read32(head);
@@ -93,6 +96,7 @@ StreamSram::Status StreamSram::pop(uint32_t thread, uint32_t treelet, uint8_t* r
   write32(layout_.counts_offset + 4ull * treelet, size(treelet) - 1);
   write32(kStoredOffset, stored() - 1);
   set_credit(thread, true);  // replaces an unused credit from an earlier pop, if any
+  if (taken) *taken = entry;
   return Status::kOk;
 }
 

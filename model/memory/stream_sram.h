@@ -58,8 +58,9 @@ class StreamSram {
   explicit StreamSram(const StreamLayout& layout);
 
   // thread: global thread id (< layout.threads); treelet < layout.treelets (else kBadRequest).
-  Status push(uint32_t thread, uint32_t treelet, const uint8_t* ray);
-  Status pop(uint32_t thread, uint32_t treelet, uint8_t* ray);
+  // `entry` (may be null) gets the entry the ray was stored in or taken from (kNil if none).
+  Status push(uint32_t thread, uint32_t treelet, const uint8_t* ray, uint32_t* entry = nullptr);
+  Status pop(uint32_t thread, uint32_t treelet, uint8_t* ray, uint32_t* entry = nullptr);
   uint32_t size(uint32_t treelet) const { return read32(layout_.counts_offset + 4ull * treelet); }
   uint32_t capacity() const { return layout_.capacity; }
   uint32_t stored() const { return read32(kStoredOffset); }

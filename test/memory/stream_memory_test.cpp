@@ -110,6 +110,41 @@ TEST(StreamMemory, OperationsThroughTlmWithExactLatencies) {
   EXPECT_EQ(mem.stored(), 1u);
 }
 
+// Banks: ray entries are interleaved over the banks, each with its own port and link, so two
+// pushes in one cycle go to two banks without waiting; with one bank the second waits. The
+// link is booked for the data: a push's on the way in, a pop's on the way out.
+TEST(StreamMemory, BanksServeInterleavedEntriesInParallelEachWithItsOwnLink) {
+  REQUIRE_FRESH_SYSTEMC();
+  StreamMemoryConfig one = tiny(64, 8, 4, 2);
+  one.ports = 1;
+  one.link_bytes_per_cycle = 64;
+  StreamMemoryConfig two = one;
+  two.banks = 2;
+  StreamMemory single("single", one), banked("banked", two);
+  RawInitiator a("a", 0, 0), b("b", 1, 0);
+  a.socket.bind(single.target);
+  b.socket.bind(banked.target);
+  std::vector<Sent> ra, rb;
+  Script s("script", [&] {
+    Ray x = make_ray(1), y = make_ray(2);
+    for (auto* r : {&ra, &rb}) {
+      RawInitiator& tp = r == &ra ? a : b;
+      r->push_back(tp.send(AccessClass::kStreamPush, 0, x.words, 48, 0, 3));  // entry 0: bank 0
+      r->push_back(tp.send(AccessClass::kStreamPush, 0, y.words, 48, 0, 3));  // entry 1: bank 1 (or 0)
+      r->push_back(tp.send(AccessClass::kStreamPop, 0, x.words, 48, 20, 3));  // entry 1 (LIFO)
+    }
+  });
+  sc_core::sc_start();
+  // Link (1 cycle for 48 B) then port, then the 3-cycle access; a pop's data leaves after it.
+  EXPECT_EQ(ra[0].done, 1u + 3u);
+  EXPECT_EQ(ra[1].done, 2u + 3u);  // one bank: its link and port were taken a cycle earlier
+  EXPECT_EQ(rb[0].done, 1u + 3u);
+  EXPECT_EQ(rb[1].done, 1u + 3u);  // two banks: in parallel
+  EXPECT_EQ(rb[2].done, 20u + 3u + 1u);
+  EXPECT_EQ(single.counters().port_conflicts + single.counters().link_conflicts, 1u);
+  EXPECT_EQ(banked.counters().port_conflicts + banked.counters().link_conflicts, 0u);
+}
+
 // The reference: one std::vector stack per treelet plus the credit rule, stated plainly.
 struct ReferenceStreams {
   std::vector<std::vector<uint32_t>> stacks;

@@ -1,0 +1,342 @@
+#!/usr/bin/python3
+"""The STRaTA paper's experiments (Kopta et al., HPG 2013), each one command that runs its
+frames (experiments/sweep.py: resumable, one folder per frame), writes a CSV with one row per
+frame (its parameters, then every statistic with its unit), and draws the figure as a PNG.
+
+    experiments/paper.py EXPERIMENT|all [--res 128x128] [--scenes sibenik,hairball,vegetation]
+                         [--jobs N] [--out out/experiments] [--mode lt] [--list]
+
+Experiments:
+    fig3-fps-vs-tms      frames/s against TMs (16..128), trax and strata-streams, per scene
+    fig4-traffic-vs-size L1 misses (= L2 accesses) and stream accesses against L2/stream size
+    fig5-7-energy        L2/stream and DRAM energy per frame against L2/stream size, per scene
+    table2-fetch-rf      instruction-fetch and register-file energy, 3 designs, 8 MB, 128 TMs
+    dram-by-class        DRAM bytes per frame by data class, 3 designs
+    size-check           fig3's Sibenik trax series at the chosen and at twice the resolution
+
+Output: <out>/<experiment>.csv, .json and .png; the frames under <out>/runs/.
+The paper uses 1024x1024 frames: pass --res 1024x1024 (and --mode sampled) on a cluster.
+"""
+import argparse
+import csv
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sweep  # noqa: E402
+
+DESIGNS = {"trax": "trax", "streams": "strata-streams", "pipelines": "strata-pipelines"}
+SIZES = [512 << 10, 1 << 20, 2 << 20, 4 << 20, 8 << 20, 16 << 20]
+TMS = [16, 32, 48, 64, 80, 96, 112, 128]
+CLASSES = ["nodes", "triangles", "scene", "path_state", "framebuffer", "thread_data", "instructions", "rays",
+           "other"]
+
+
+def frame(design, scene, args, **sets):
+    p = {"config": DESIGNS[design], "scene": scene, "res": args.res, "set": {"timing.mode": args.mode}}
+    for k, v in sets.items():
+        p["set"][k.replace("__", ".")] = v
+    return p
+
+
+def sized(design, scene, size, args):
+    """At equal SRAM: TRaX's L2 is `size`; STRaTA keeps its 512 KB L2 and gets a `size` stream memory."""
+    if design == "trax":
+        return frame(design, scene, args, memory__l2__size_bytes=size)
+    return frame(design, scene, args, memory__stream__size_bytes=size)
+
+
+def fig3(args):
+    runs = [frame(d, s, args, tms=t) for s in args.scenes for d in ("trax", "streams") for t in TMS]
+    return runs, plot_fig3
+
+
+def fig4(args):
+    runs = [sized(d, s, z, args) for s in args.scenes for d in ("trax", "streams") for z in SIZES]
+    return runs, plot_fig4
+
+
+def fig5_7(args):
+    runs, _ = fig4(args)
+    return runs, plot_fig5_7
+
+
+def table2(args):
+    runs = [sized(d, s, 8 << 20, args) for s in args.scenes for d in DESIGNS]
+    return runs, plot_table2
+
+
+def dram_by_class(args):
+    runs = [frame(d, s, args) for s in args.scenes for d in DESIGNS]
+    return runs, plot_dram_by_class
+
+
+def size_check(args):
+    w, h = (int(x) for x in args.res.split("x"))
+    big = argparse.Namespace(**vars(args))
+    big.res = f"{2 * w}x{2 * h}"
+    runs = [frame("trax", "sibenik", a, tms=t) for a in (args, big) for t in (32, 64, 128)]
+    return runs, plot_size_check
+
+
+EXPERIMENTS = {
+    "fig3-fps-vs-tms": fig3,
+    "fig4-traffic-vs-size": fig4,
+    "fig5-7-energy": fig5_7,
+    "table2-fetch-rf": table2,
+    "dram-by-class": dram_by_class,
+    "size-check": size_check,
+}
+
+
+# ---- Plots ---------------------------------------------------------------------------------
+
+def pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def design_of(r):
+    return {v: k for k, v in DESIGNS.items()}[r.params["config"]]
+
+
+def scene_of(r):
+    return r.params["scene"]
+
+
+def val(r, path):
+    return sweep.get(r.stats, path)
+
+
+def style(design):
+    return {"trax": dict(ls="-", marker="o"), "streams": dict(ls="--", marker="s"),
+            "pipelines": dict(ls=":", marker="^")}[design]
+
+
+def title(args, what):
+    return f"{what} ({args.res}, {args.mode})"
+
+
+def plot_fig3(results, args, png):
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for s in args.scenes:
+        for d in ("trax", "streams"):
+            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=lambda r: r.params["set"]["tms"])
+            if rs:
+                ax.plot([r.params["set"]["tms"] for r in rs], [val(r, "frame.frames_per_second") for r in rs],
+                        label=f"{s}, {DESIGNS[d]}", **style(d))
+    ax.set_xlabel("TMs (32 TPs each)")
+    ax.set_ylabel("frames per second [1/s]")
+    ax.set_title(title(args, "Frame rate against chip size (paper Fig. 3)"))
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def size_label(z):
+    return f"{z >> 20} MB" if z >= 1 << 20 else f"{z >> 10} KB"
+
+
+def size_of(r):
+    s = r.params["set"]
+    return s.get("memory.l2.size_bytes", s.get("memory.stream.size_bytes"))
+
+
+def plot_fig4(results, args, png):
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(args.scenes), figsize=(5 * len(args.scenes), 4.2), squeeze=False)
+    for ax, s in zip(axes[0], args.scenes):
+        for d in ("trax", "streams"):
+            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=size_of)
+            if not rs:
+                continue
+            xs = [size_of(r) for r in rs]
+            ax.plot(xs, [val(r, "memory.l2.accesses") for r in rs], label=f"{DESIGNS[d]}: L1 misses (L2 accesses)",
+                    **style(d))
+            if d == "streams":
+                ax.plot(xs, [val(r, "memory.stream.accesses") for r in rs], label=f"{DESIGNS[d]}: stream accesses",
+                        ls="-.", marker="x")
+        ax.set_xscale("log", base=2)
+        ax.set_xticks(SIZES, [size_label(z) for z in SIZES])
+        ax.set_yscale("log")
+        ax.set_xlabel("L2 (trax) or stream memory (strata) size")
+        ax.set_ylabel("accesses per frame [count]")
+        ax.set_title(s)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.suptitle(title(args, "On-chip traffic against L2 / stream size (paper Fig. 4)"))
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def plot_fig5_7(results, args, png):
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(args.scenes), figsize=(5 * len(args.scenes), 4.2), squeeze=False)
+    for ax, s in zip(axes[0], args.scenes):
+        for d in ("trax", "streams"):
+            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=size_of)
+            if not rs:
+                continue
+            xs = [size_of(r) for r in rs]
+            ax.plot(xs, [val(r, "energy_nj.l2_and_stream") * 1e-6 for r in rs],
+                    label=f"{DESIGNS[d]}: {'L2' if d == 'trax' else 'L2 + stream'}", **style(d))
+            ax.plot(xs, [val(r, "energy_nj.dram") * 1e-6 for r in rs], label=f"{DESIGNS[d]}: DRAM",
+                    ls=style(d)["ls"], marker="D", alpha=0.7)
+        ax.set_xscale("log", base=2)
+        ax.set_xticks(SIZES, [size_label(z) for z in SIZES])
+        ax.set_xlabel("L2 (trax) or stream memory (strata) size")
+        ax.set_ylabel("energy per frame [mJ]")
+        ax.set_title(s)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle(title(args, "Memory energy against L2 / stream size (paper Figs. 5-7)"))
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def plot_table2(results, args, png):
+    plt = pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    width = 0.8 / len(DESIGNS)
+    for ax, (key, label) in zip(axes, (("instruction_fetch", "instruction fetch"), ("register_file", "register file"))):
+        for i, d in enumerate(DESIGNS):
+            ys, pct = [], []
+            for s in args.scenes:
+                r = next(r for r in results if scene_of(r) == s and design_of(r) == d)
+                base = next(r for r in results if scene_of(r) == s and design_of(r) == "trax")
+                ys.append(val(r, f"energy_nj.{key}") * 1e-9)
+                pct.append(100.0 * val(r, f"energy_nj.{key}") / val(base, f"energy_nj.{key}"))
+            xs = [j + i * width for j in range(len(args.scenes))]
+            bars = ax.bar(xs, ys, width, label=DESIGNS[d])
+            for b, p in zip(bars, pct):
+                ax.annotate(f"{p:.0f}%", (b.get_x() + b.get_width() / 2, b.get_height()), ha="center",
+                            va="bottom", fontsize=7)
+        ax.set_xticks([j + width for j in range(len(args.scenes))], args.scenes)
+        ax.set_ylabel("energy per frame [J]")
+        ax.set_title(f"{label} (% of trax)")
+        ax.legend(fontsize=8)
+    fig.suptitle(title(args, "Instruction-fetch and register-file energy, 128 TMs, 8 MB (paper Table 2)"))
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def plot_dram_by_class(results, args, png):
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    labels, bottoms = [], []
+    bars = []
+    for s in args.scenes:
+        for d in DESIGNS:
+            r = next(r for r in results if scene_of(r) == s and design_of(r) == d)
+            labels.append(f"{s}\n{d}")
+            bars.append([val(r, f"memory.dram.by_data.{c}.bytes") * 1e-6 for c in CLASSES])
+    bottoms = [0.0] * len(bars)
+    for ci, c in enumerate(CLASSES):
+        heights = [b[ci] for b in bars]
+        if not any(heights):
+            continue
+        ax.bar(range(len(bars)), heights, bottom=bottoms, label=c.replace("_", " "))
+        bottoms = [x + y for x, y in zip(bottoms, heights)]
+    ax.set_xticks(range(len(bars)), labels, fontsize=8)
+    ax.set_ylabel("DRAM traffic per frame [MB]")
+    ax.set_title(title(args, "DRAM traffic by data class"))
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def plot_size_check(results, args, png):
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for res in sorted({r.params["res"] for r in results}):
+        rs = sorted((r for r in results if r.params["res"] == res), key=lambda r: r.params["set"]["tms"])
+        base = rs[-1]
+        ax.plot([r.params["set"]["tms"] for r in rs],
+                [val(r, "frame.frames_per_second") / val(base, "frame.frames_per_second") for r in rs],
+                marker="o", label=f"{res}")
+    ax.set_xlabel("TMs")
+    ax.set_ylabel("frame rate, relative to 128 TMs")
+    ax.set_title(f"Sibenik, trax: does the trend hold at 2x the resolution? ({args.mode})")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+# ---- Tables --------------------------------------------------------------------------------
+
+def write_tables(name, results, out):
+    rows = []
+    for r in results:
+        if r.stats is None:
+            continue
+        row = {"run": os.path.basename(r.folder), "config": r.params["config"], "scene": r.params["scene"],
+               "res": r.params["res"]}
+        for k, v in sorted(r.params.get("set", {}).items()):
+            row["set " + k] = v
+        row["simulator wall [s]"] = round(r.wall, 3)
+        row.update(sweep.flatten(r.stats))
+        rows.append(row)
+    columns = []
+    for row in rows:
+        columns += [c for c in row if c not in columns]
+    with open(os.path.join(out, name + ".csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(out, name + ".json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    return len(rows)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("experiment", nargs="?", help="one of the experiments, or 'all'")
+    ap.add_argument("--res", default="128x128", help="frame size WxH (default 128x128; the paper: 1024x1024)")
+    ap.add_argument("--mode", default="lt", choices=["lt", "precise", "sampled"], help="timing mode")
+    ap.add_argument("--scenes", default="sibenik,hairball,vegetation", help="comma-separated scene specs")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count(), help="frames run at once (default: cores)")
+    ap.add_argument("--out", default=os.path.join(sweep.ROOT, "out", "experiments"), help="output folder")
+    ap.add_argument("--list", action="store_true", help="list the experiments and their frame counts")
+    args = ap.parse_args()
+    args.scenes = [s for s in args.scenes.split(",") if s]
+    if args.list or not args.experiment:
+        for name, make in EXPERIMENTS.items():
+            runs, _ = make(args)
+            print(f"{name:22} {len(runs):3} frames")
+        return 0
+    names = list(EXPERIMENTS) if args.experiment == "all" else [args.experiment]
+    unknown = [n for n in names if n not in EXPERIMENTS]
+    if unknown:
+        ap.error(f"unknown experiment {unknown[0]!r}; --list shows them")
+    if not os.access(sweep.SIM, os.X_OK):
+        sys.exit(f"paper.py: {sweep.SIM} not found: build first (scripts/build)")
+    os.makedirs(args.out, exist_ok=True)
+    plans = {n: EXPERIMENTS[n](args) for n in names}
+    # Every frame of every experiment in one sweep: shared frames run once, all cores stay busy.
+    everything = [p for runs, _ in plans.values() for p in runs]
+    results = sweep.sweep(everything, args.out, args.jobs, label="experiments")
+    by_key = {sweep.run_key(r.params): r for r in results}
+    failed = 0
+    for name, (runs, plot) in plans.items():
+        rs = [by_key[sweep.run_key(p)] for p in runs]
+        bad = [r for r in rs if r.error]
+        failed += len(bad)
+        n = write_tables(name, rs, args.out)
+        if bad:
+            print(f"{name}: {len(bad)} of {len(rs)} frames failed; no plot (the CSV has the {n} that ran)",
+                  file=sys.stderr)
+            continue
+        png = os.path.join(args.out, name + ".png")
+        plot(rs, args, png)
+        print(f"{name}: {n} frames -> {os.path.join(args.out, name)}.csv, .png")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
