@@ -52,8 +52,16 @@ def fig3(args):
     return runs, plot_fig3
 
 
+def fits(design, size):
+    """Whether the design can run at this L2/stream size. STRaTA keeps 148 B per ray in its
+    stream memory (48 B ray, 4 B link, 96 B path state on chip), so 512 KB holds about 3,500
+    rays, fewer than one per TP of 128 TMs: strata-sim refuses that configuration, and the
+    experiments leave the point out (docs/paper-reproduction.md)."""
+    return design == "trax" or size >= (1 << 20)
+
+
 def fig4(args):
-    runs = [sized(d, s, z, args) for s in args.scenes for d in ("trax", "streams") for z in SIZES]
+    runs = [sized(d, s, z, args) for s in args.scenes for d in ("trax", "streams") for z in SIZES if fits(d, z)]
     return runs, plot_fig4
 
 
@@ -147,56 +155,48 @@ def size_of(r):
     return s.get("memory.l2.size_bytes", s.get("memory.stream.size_bytes"))
 
 
-def plot_fig4(results, args, png):
+def size_panels(results, args, png, suptitle, ylabel, draw, log_y=False):
+    """One panel per scene, L2/stream size on the x axis; draw(ax, design, xs, runs) plots a design."""
     plt = pyplot()
-    fig, axes = plt.subplots(1, len(args.scenes), figsize=(5 * len(args.scenes), 4.2), squeeze=False)
+    fig, axes = plt.subplots(1, len(args.scenes), figsize=(max(7.5, 5 * len(args.scenes)), 4.2), squeeze=False)
     for ax, s in zip(axes[0], args.scenes):
         for d in ("trax", "streams"):
             rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=size_of)
-            if not rs:
-                continue
-            xs = [size_of(r) for r in rs]
-            ax.plot(xs, [val(r, "memory.l2.accesses") for r in rs], label=f"{DESIGNS[d]}: L1 misses (L2 accesses)",
-                    **style(d))
-            if d == "streams":
-                ax.plot(xs, [val(r, "memory.stream.accesses") for r in rs], label=f"{DESIGNS[d]}: stream accesses",
-                        ls="-.", marker="x")
+            if rs:
+                draw(ax, d, [size_of(r) for r in rs], rs)
         ax.set_xscale("log", base=2)
         ax.set_xticks(SIZES, [size_label(z) for z in SIZES])
-        ax.set_yscale("log")
+        if log_y:
+            ax.set_yscale("log")
         ax.set_xlabel("L2 (trax) or stream memory (strata) size")
-        ax.set_ylabel("accesses per frame [count]")
+        ax.set_ylabel(ylabel)
         ax.set_title(s)
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7)
-    fig.suptitle(title(args, "On-chip traffic against L2 / stream size (paper Fig. 4)"))
+    fig.suptitle(title(args, suptitle))
     fig.tight_layout()
     fig.savefig(png, dpi=120)
+
+
+def plot_fig4(results, args, png):
+    def draw(ax, d, xs, rs):
+        ax.plot(xs, [val(r, "memory.l2.accesses") for r in rs], label=f"{DESIGNS[d]}: L1 misses (L2 accesses)",
+                **style(d))
+        if d == "streams":
+            ax.plot(xs, [val(r, "memory.stream.accesses") for r in rs], label=f"{DESIGNS[d]}: stream accesses",
+                    ls="-.", marker="x")
+    size_panels(results, args, png, "On-chip traffic against L2 / stream size (paper Fig. 4)",
+                "accesses per frame [count]", draw, log_y=True)
 
 
 def plot_fig5_7(results, args, png):
-    plt = pyplot()
-    fig, axes = plt.subplots(1, len(args.scenes), figsize=(5 * len(args.scenes), 4.2), squeeze=False)
-    for ax, s in zip(axes[0], args.scenes):
-        for d in ("trax", "streams"):
-            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=size_of)
-            if not rs:
-                continue
-            xs = [size_of(r) for r in rs]
-            ax.plot(xs, [val(r, "energy_nj.l2_and_stream") * 1e-6 for r in rs],
-                    label=f"{DESIGNS[d]}: {'L2' if d == 'trax' else 'L2 + stream'}", **style(d))
-            ax.plot(xs, [val(r, "energy_nj.dram") * 1e-6 for r in rs], label=f"{DESIGNS[d]}: DRAM",
-                    ls=style(d)["ls"], marker="D", alpha=0.7)
-        ax.set_xscale("log", base=2)
-        ax.set_xticks(SIZES, [size_label(z) for z in SIZES])
-        ax.set_xlabel("L2 (trax) or stream memory (strata) size")
-        ax.set_ylabel("energy per frame [mJ]")
-        ax.set_title(s)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle(title(args, "Memory energy against L2 / stream size (paper Figs. 5-7)"))
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    def draw(ax, d, xs, rs):
+        ax.plot(xs, [val(r, "energy_nj.l2_and_stream") * 1e-6 for r in rs],
+                label=f"{DESIGNS[d]}: {'L2' if d == 'trax' else 'L2 + stream'}", **style(d))
+        ax.plot(xs, [val(r, "energy_nj.dram") * 1e-6 for r in rs], label=f"{DESIGNS[d]}: DRAM",
+                ls=style(d)["ls"], marker="D", alpha=0.7)
+    size_panels(results, args, png, "Memory energy against L2 / stream size (paper Figs. 5-7)",
+                "energy per frame [mJ]", draw)
 
 
 def plot_table2(results, args, png):
