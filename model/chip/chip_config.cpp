@@ -100,6 +100,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.l2.banks", &l2.banks);
   b.bind("memory.l2.line_bytes", &l2.line_bytes);
   b.bind("memory.l2.ways", &l2.ways);
+  b.bind("memory.l2.hash_banks", &l2.hash_banks);
   b.bind("memory.l2.hit_latency_cycles", &l2.hit_latency_cycles);
   b.bind("memory.l2.calendar_horizon_cycles", &l2.calendar_horizon_cycles);
   b.bind("memory.l2.access_energy_nj", &l2.access_energy_nj);
@@ -165,6 +166,7 @@ void ChipConfig::finalize() {
   interconnect.tm_ports = 3 * tms;
   interconnect.l2_banks = l2.banks;
   interconnect.l2_line_bytes = l2.line_bytes;
+  interconnect.l2_hash_banks = l2.hash_banks;
   // The stream memory's banks each have a link of the crossbar's width; it books them itself.
   interconnect.stream_link = false;
   stream.link_bytes_per_cycle = interconnect.link_bytes_per_cycle;

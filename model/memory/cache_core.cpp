@@ -3,7 +3,8 @@
 namespace strata::memory {
 
 CacheCore::CacheCore(const CacheGeometry& g)
-    : banks_(g.banks), line_bytes_(g.line_bytes), ways_(g.ways), sets_(g.size_bytes / g.line_bytes / g.ways) {
+    : banks_(g.banks), line_bytes_(g.line_bytes), ways_(g.ways), sets_(g.size_bytes / g.line_bytes / g.ways),
+      interleave_(g.banks, g.hash_banks) {
   while ((1u << line_shift_) != line_bytes_) ++line_shift_;
   const std::size_t lines = std::size_t{sets_} * ways_;
   tag_.assign(lines, 0);

@@ -18,6 +18,7 @@
 // behaviour is exactly that of an ordinary cache.
 #pragma once
 
+#include "model/memory/bank_interleave.h"
 #include "tlm/clock.h"
 #include "tlm/data_class.h"
 #include "tlm/reservation_calendar.h"
@@ -33,6 +34,7 @@ struct CacheGeometry {
   uint32_t line_bytes;
   uint32_t ways;  // 1: direct-mapped
   uint32_t horizon_cycles;
+  bool hash_banks = false;  // BankInterleave: XOR-folded bank index
 };
 
 class CacheCore {
@@ -45,8 +47,12 @@ class CacheCore {
   uint64_t line_of(uint64_t addr) const { return addr >> line_shift_; }
   uint64_t line_base(uint64_t line) const { return line << line_shift_; }
   // Lines are interleaved over banks; a bank's lines map to the sets whose low bits name it.
-  uint32_t bank_of(uint64_t line) const { return static_cast<uint32_t>(line & (banks_ - 1)); }
-  uint32_t set_of(uint64_t line) const { return static_cast<uint32_t>(line & (sets_ - 1)); }
+  // With a hashed bank index the set takes the hashed bits in place of the line's low bits:
+  // for a fixed tag that is still a one-to-one map of lines onto sets, so capacity is intact.
+  uint32_t bank_of(uint64_t line) const { return interleave_.bank(line); }
+  uint32_t set_of(uint64_t line) const {
+    return (static_cast<uint32_t>(line) & (sets_ - 1) & ~(banks_ - 1)) | interleave_.bank(line);
+  }
   bool crosses_line(uint64_t addr, uint32_t bytes) const {
     return bytes == 0 || (addr & (line_bytes_ - 1)) + bytes > line_bytes_;
   }
@@ -102,6 +108,7 @@ class CacheCore {
   uint32_t line_shift_ = 0;
   uint32_t ways_;
   uint32_t sets_;
+  BankInterleave interleave_;
   std::vector<uint64_t> tag_;  // line index + 1; 0 = invalid
   std::vector<Cycle> ready_;
   std::vector<Cycle> requested_;      // bank slot of the miss that fetched the line

@@ -48,6 +48,10 @@ struct L2Config {
   uint32_t banks = 16;
   uint32_t line_bytes = 64;
   uint32_t ways = 1;  // 1: direct-mapped; more: set-associative with LRU replacement
+  // true: the bank index is XOR-folded from the whole line address (bank_interleave.h), as a
+  // banked L2 in hardware is built; false: the line's low bits, so 32 KB-aligned treelet roots
+  // all land in bank 0 (kept to measure that, docs/paper-reproduction.md).
+  bool hash_banks = true;
   uint32_t hit_latency_cycles = 3;
   uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
   // Unset: the STRaTA CACTI table entry for size_bytes (sram_access_energy_nj).
@@ -106,6 +110,7 @@ struct InterconnectConfig {
   uint32_t tm_ports = 128;
   uint32_t l2_banks = 16;       // must match the L2: requests are routed to bank ports
   uint32_t l2_line_bytes = 64;  // bank interleaving granule, as in the L2
+  bool l2_hash_banks = true;    // as the L2's hash_banks: the same line goes to the same bank
   uint32_t link_bytes_per_cycle = 64;
   uint32_t hop_latency_cycles = 1;  // each way
   // Book a link for stream-memory traffic here (one for all of it). The chip turns it off:

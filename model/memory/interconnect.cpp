@@ -10,6 +10,7 @@ using transport::MemoryExtension;
 Interconnect::Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config)
     : sc_core::sc_module(name),
       config_((config.validate(), config)),
+      interleave_(config_.l2_banks, config_.l2_hash_banks),
       stats_("interconnect", "The crossbar between the TMs and the L2 banks and stream memory.", stats::Basis::kDataOps) {
   tm_side.register_b_transport(this, &Interconnect::b_transport);
   while ((1u << line_shift_) != config_.l2_line_bytes) ++line_shift_;

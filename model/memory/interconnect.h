@@ -7,6 +7,7 @@
 // All links are reservation calendars: contention is right in both timing modes.
 #pragma once
 
+#include "model/memory/bank_interleave.h"
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
 #include "model/stats/stat_group.h"
@@ -43,9 +44,7 @@ class Interconnect : public sc_core::sc_module {
 
   Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config);
 
-  uint32_t bank_of(uint64_t addr) const {
-    return static_cast<uint32_t>((addr >> line_shift_) & (config_.l2_banks - 1));
-  }
+  uint32_t bank_of(uint64_t addr) const { return interleave_.bank(addr >> line_shift_); }
   const Counters& counters() const { return counters_.counted; }
   const stats::Group& stats() const { return stats_; }
   uint64_t overflow_bookings() const;
@@ -55,6 +54,7 @@ class Interconnect : public sc_core::sc_module {
   void b_transport(int port, tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
 
   InterconnectConfig config_;
+  BankInterleave interleave_;
   transport::Clock clock_;
   uint32_t line_shift_ = 0;
   std::vector<transport::ReservationCalendar> tm_ports_;

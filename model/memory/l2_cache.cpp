@@ -12,7 +12,7 @@ L2Cache::L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMem
     : sc_core::sc_module(name),
       config_((config.validate(), config)),
       path_(CacheGeometry{config.size_bytes, config.banks, config.line_bytes, config.ways,
-                          config.calendar_horizon_cycles},
+                          config.calendar_horizon_cycles, config.hash_banks},
             config.hit_latency_cycles, config.energy_per_access_nj(), backing, downstream, "accesses_per_cycle"),
       banks_(config.banks),
       stats_("l2", "The shared L2 (banked, write-back, write-allocate): the L1s' misses and write-arounds.",

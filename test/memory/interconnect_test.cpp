@@ -66,9 +66,21 @@ TEST(Interconnect, BankOfMatchesTheL2LineInterleaving) {
   EXPECT_EQ(b.xbar.bank_of(0), 0u);
   EXPECT_EQ(b.xbar.bank_of(63), 0u);
   EXPECT_EQ(b.xbar.bank_of(64), 1u);
-  EXPECT_EQ(b.xbar.bank_of(16 * 64), 0u);
+  EXPECT_EQ(b.xbar.bank_of(16 * 64), 1u);  // hashed: line 16 folds to 1 ^ 0
+  // The crossbar routes each line to the bank the L2 looks it up in.
+  const BankInterleave l2_banks(16, true);
+  for (uint64_t addr = 0; addr < (4u << 20); addr += 64 * 37) EXPECT_EQ(b.xbar.bank_of(addr), l2_banks.bank(addr / 64)) << addr;
   Script s("script", [] {});
   sc_core::sc_start();
+}
+
+TEST(Interconnect, LowBitBankOfWhenTheL2DoesNotHash) {
+  REQUIRE_FRESH_SYSTEMC();
+  InterconnectConfig c = XbarBench::config();
+  c.l2_hash_banks = false;
+  Interconnect xbar("xbar", c);
+  EXPECT_EQ(xbar.bank_of(16 * 64), 0u);
+  EXPECT_EQ(xbar.bank_of(17 * 64), 1u);
 }
 
 }  // namespace

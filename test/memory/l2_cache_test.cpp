@@ -21,9 +21,17 @@ struct L2Bench {
   }
 };
 
+// The tests of sets and banks use the plain low-bit interleave, where which lines share a set
+// or a bank is easy to see; the hashed default has tests of its own below.
+L2Config low_bit_banks() {
+  L2Config c;
+  c.hash_banks = false;
+  return c;
+}
+
 TEST(L2Cache, DirectMappedHitMissAndConflictMisses) {
   REQUIRE_FRESH_SYSTEMC();
-  L2Config c;  // direct-mapped
+  L2Config c = low_bit_banks();  // direct-mapped
   L2Bench b(c);
   const uint64_t a = 0x40000, conflicting = a + 512 * 1024;
   std::vector<Sent> r;
@@ -48,7 +56,7 @@ TEST(L2Cache, DirectMappedHitMissAndConflictMisses) {
 
 TEST(L2Cache, SetAssociativeKeepsConflictingLinesAndEvictsLeastRecentlyUsed) {
   REQUIRE_FRESH_SYSTEMC();
-  L2Config c;
+  L2Config c = low_bit_banks();
   c.ways = 4;  // 2048 sets: lines 128 KB apart share a set
   L2Bench b(c);
   const uint64_t stride = 128 * 1024;
@@ -71,7 +79,7 @@ TEST(L2Cache, SetAssociativeKeepsConflictingLinesAndEvictsLeastRecentlyUsed) {
 
 TEST(L2Cache, WriteBackAllocatesFullLineStoresAndWritesDirtyVictimsBack) {
   REQUIRE_FRESH_SYSTEMC();
-  L2Bench b(L2Config{});
+  L2Bench b(low_bit_banks());
   const uint64_t d = 0x8000, conflicting = d + 512 * 1024;
   std::vector<Sent> r;
   Script s("script", [&] {
@@ -97,7 +105,7 @@ TEST(L2Cache, WriteBackAllocatesFullLineStoresAndWritesDirtyVictimsBack) {
 
 TEST(L2Cache, BankConflictsSerialiseOneAccessPerBankPerCycle) {
   REQUIRE_FRESH_SYSTEMC();
-  L2Bench b(L2Config{});
+  L2Bench b(low_bit_banks());
   std::vector<Sent> r;
   Script s("script", [&] {
     b.tm.load(0, 0, 64);
@@ -112,6 +120,35 @@ TEST(L2Cache, BankConflictsSerialiseOneAccessPerBankPerCycle) {
   EXPECT_EQ(r[1].done, 504u);
   EXPECT_EQ(r[2].done, 503u);
   EXPECT_EQ(b.l2.counters().bank_conflicts, 2u);  // one at warm-up, one here
+}
+
+// 16 lines 32 KB apart, the stride of the scene image's treelets, asked for at once: with the
+// low-bit interleave all are in bank 0 and queue one per cycle; hashed, each has its own bank.
+Cycle last_of_strided_burst(const L2Config& c, uint64_t* conflicts) {
+  L2Bench b(c);
+  std::vector<Sent> r;
+  Script s("script", [&] {
+    for (uint64_t i = 0; i < 16; ++i) r.push_back(b.tm.load(i * 32 * 1024, 0, 64));
+  });
+  sc_core::sc_start();
+  *conflicts = b.l2.counters().bank_conflicts;
+  Cycle last = 0;
+  for (const Sent& x : r) last = std::max(last, x.done);
+  return last;
+}
+
+TEST(L2Cache, LowBitInterleaveQueuesTreeletStridedLinesOnOneBank) {
+  REQUIRE_FRESH_SYSTEMC();
+  uint64_t conflicts = 0;
+  EXPECT_EQ(last_of_strided_burst(low_bit_banks(), &conflicts), 15u + 3 + kDram);
+  EXPECT_EQ(conflicts, 15u);
+}
+
+TEST(L2Cache, HashedBanksServeTreeletStridedLinesInParallel) {
+  REQUIRE_FRESH_SYSTEMC();
+  uint64_t conflicts = 0;
+  EXPECT_EQ(last_of_strided_burst(L2Config{}, &conflicts), 3u + kDram);
+  EXPECT_EQ(conflicts, 0u);
 }
 
 TEST(L2Cache, EnergyPerAccessFollowsTheCactiTableBySize) {
