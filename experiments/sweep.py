@@ -20,7 +20,8 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SIM = os.path.join(ROOT, "build", "sim", "strata-sim")
+# STRATA_SIM: another simulator binary, e.g. a copy that a rebuild during a long sweep leaves alone.
+SIM = os.environ.get("STRATA_SIM") or os.path.join(ROOT, "build", "sim", "strata-sim")
 
 
 def run_key(params):

@@ -1,5 +1,7 @@
 #include "sim/ray_file.h"
 
+#include "sim/output_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -126,12 +128,11 @@ std::vector<uint8_t> make_header(const std::filesystem::path& file, const Format
 
 void write_bytes(const std::filesystem::path& file, const Format& f,
                  const std::vector<uint8_t>& bytes) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out)
-    throw RayFileError(name_of(file) + ": cannot write " + f.kind + ": " + std::strerror(errno));
-  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-  out.close();
-  if (!out) throw RayFileError(name_of(file) + ": cannot write " + f.kind);
+  try {
+    write_file_atomically(file, bytes, f.kind);
+  } catch (const std::runtime_error& e) {
+    throw RayFileError(e.what());
+  }
 }
 
 struct CountingObserver {

@@ -12,6 +12,7 @@
 #include "sim/image_output.h"
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
+#include "sim/output_file.h"
 #include "sim/ray_file.h"
 #include "sim/resolution.h"
 #include "sim/scene_source.h"
@@ -107,6 +108,8 @@ void run_render(RenderOptions o) {
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
   if (!(o.exposure > 0.0f)) throw std::invalid_argument("exposure: must be positive");
+  require_writable_dir(o.out_dir, "--out");
+  if (!o.dump_rays.empty()) require_writable_file(o.dump_rays, "--dump-rays");
   const LoadedScene loaded = load_scene_and_image(o.source);
   std::vector<TraceRay> rays;
   IssRunStats iss_stats;
@@ -118,14 +121,11 @@ void run_render(RenderOptions o) {
     r = render_native(loaded.image, o.settings, o.dump_rays.empty() ? nullptr : &rays);
   }
   const std::filesystem::path dir(o.out_dir);
-  std::filesystem::create_directories(dir);
   write_exr(dir / (o.engine + ".exr"), o.settings.width, o.settings.height, r.image);
   write_png_preview(dir / (o.engine + ".png"), o.settings.width, o.settings.height, r.image, o.exposure);
   const nlohmann::json j = stats_json(o, r, o.engine == "iss" ? &iss_stats : nullptr);
   const std::filesystem::path stats_file = dir / (o.engine + "-stats.json");
-  std::ofstream out(stats_file);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error(stats_file.string() + ": cannot write");
+  write_file_atomically(stats_file, j.dump(2) + "\n");
   print_summary(j, dir.string(), o.engine);
   if (!o.dump_rays.empty()) {
     std::vector<RayRecord> records(rays.size());

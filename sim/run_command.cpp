@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <set>
 #include <unistd.h>
@@ -17,6 +16,7 @@
 #include "sim/image_output.h"
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
+#include "sim/output_file.h"
 #include "sim/progress_monitor.h"
 #include "sim/resolution.h"
 #include "sim/scene_source.h"
@@ -84,6 +84,12 @@ void run_frame(RunOptions o) {
   inputs.scene_image_bytes = loaded.image.size_bytes();
   inputs.treelet_bytes = loaded.image.header().treelet_bytes;
   inputs.frame = make_frame_params(loaded.image.header(), o.settings);
+  // Before the simulation, not after it: an unwritable --out or --vcd fails in a second.
+  require_writable_dir(o.out_dir, "--out");
+  if (!o.vcd.empty()) require_writable_file(o.vcd, "--vcd");
+  if (o.vcd_start > o.vcd_end)
+    throw std::runtime_error("--vcd-start " + std::to_string(o.vcd_start) + " is after --vcd-end " +
+                             std::to_string(o.vcd_end));
   chip::Chip chip("chip", config, inputs);
 
   sc_core::sc_trace_file* vcd = nullptr;
@@ -107,11 +113,10 @@ void run_frame(RunOptions o) {
 
   const chip::FrameReport report(chip, wall, interrupted);
   const std::filesystem::path dir(o.out_dir);
-  std::filesystem::create_directories(dir);
   const std::vector<kernels::Pixel> image = chip.framebuffer();
   write_exr(dir / "image.exr", o.settings.width, o.settings.height, image);
   write_png_preview(dir / "image.png", o.settings.width, o.settings.height, image);
-  std::ofstream(dir / "stats.json") << report.to_json(detail).dump(2) << "\n";
+  write_file_atomically(dir / "stats.json", report.to_json(detail).dump(2) + "\n");
   std::printf("%s", report.summary().c_str());
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());

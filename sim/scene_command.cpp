@@ -8,6 +8,7 @@
 
 #include "scenes/scene_stats.h"
 #include "sim/commands.h"
+#include "sim/output_file.h"
 #include "sim/scene_source.h"
 
 namespace strata::sim {
@@ -98,6 +99,7 @@ void print_summary(const nlohmann::json& j) {
 }
 
 void run_scene_info(const SceneInfoOptions& o) {
+  if (!o.json_out.empty()) require_writable_file(o.json_out, "--json");
   const LoadedScene loaded = load_scene_and_image(o.source);
   const nlohmann::json j =
       to_json(loaded.scene, loaded.image, loaded.build, loaded.load_seconds,
@@ -105,9 +107,7 @@ void run_scene_info(const SceneInfoOptions& o) {
               scenes::measure_crossings(loaded.image, o.rays, o.seed), o);
   print_summary(j);
   if (!o.json_out.empty()) {
-    std::ofstream out(o.json_out);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error(o.json_out + ": cannot write");
+    write_file_atomically(o.json_out, j.dump(2) + "\n");
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "scenes/scene_spec.h"
 #include "sim/commands.h"
+#include "sim/output_file.h"
 #include "sim/ray_file.h"
 #include "sim/scene_source.h"
 
@@ -26,7 +27,14 @@ struct TraceOptions {
 
 double per(uint64_t total, uint64_t n) { return n ? double(total) / double(n) : 0.0; }
 
+// Rays --generate writes at most: 2^27 rays are a 4 GB file, and the rays are built in memory.
+constexpr uint32_t kMaxGeneratedRays = 1u << 27;
+
 void run_generate(const TraceOptions& o) {
+  if (o.generate > kMaxGeneratedRays)
+    throw std::invalid_argument("--generate: at most " + std::to_string(kMaxGeneratedRays) + " rays, got " +
+                                std::to_string(o.generate));
+  require_writable_file(o.out, "--out");
   // Only the bounds are needed: no BVH build.
   const scenes::Scene scene = scenes::load_scene(o.source.scene, STRATA_SOURCE_DIR);
   for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
@@ -41,6 +49,7 @@ void run_generate(const TraceOptions& o) {
 void run_trace(const TraceOptions& o) {
   // The ray file first: a bad file should fail before a long scene build.
   const std::vector<RayRecord> rays = read_ray_file(o.rays_in);
+  require_writable_file(o.out, "--out");
 
   const LoadedScene loaded = load_scene_and_image(o.source);
   const scenes::SceneImage& image = loaded.image;
