@@ -1,5 +1,6 @@
 #include "scenes/load_obj.h"
 
+#include "scenes/obj_line_check.h"
 #include "scenes/validate.h"
 
 #include <tiny_obj_loader.h>
@@ -30,6 +31,11 @@ class MtlReader : public tinyobj::MaterialReader {
                   std::map<std::string, int>* name_to_id, std::string* warn,
                   std::string* err) override {
     const fs::path path = dir_ / mtl_name;
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {  // a FIFO would block the open
+      missing.push_back(path.string() + " (not a regular file)");
+      return false;
+    }
     std::ifstream in(path);
     if (!in) {
       missing.push_back(path.string());
@@ -118,6 +124,7 @@ void load_obj(Scene& scene, const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError(source + ": cannot open file");
   const bool truncated_tail = ends_without_newline(in);
+  check_obj_lines(in, source);
 
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;

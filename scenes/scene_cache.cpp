@@ -25,6 +25,11 @@ std::filesystem::path cache_file_for(const std::filesystem::path& dir, uint64_t 
 }
 
 SceneImage read_scene_image(const std::filesystem::path& file) {
+  // Checked before opening: opening a FIFO would block for ever, a directory reads as garbage.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw SceneError(file.string() + ": cannot open scene image: " +
+                     (std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
   std::ifstream in(file, std::ios::binary | std::ios::ate);
   if (!in) throw SceneError(file.string() + ": cannot open scene image");
   const auto size = static_cast<uint64_t>(in.tellg());
@@ -42,12 +47,21 @@ void write_scene_image(const SceneImage& image, const std::filesystem::path& fil
   // Write beside the target and rename, so a crash never leaves a half-written cache file
   // under the final name (and a concurrent reader sees the old file or the new one).
   const auto tmp = file.string() + ".tmp." + std::to_string(::getpid());
+  std::error_code ec;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(image.bytes()), std::streamsize(image.size_bytes()));
-    if (!out) throw SceneError(tmp + ": cannot write scene image");
+    out.close();
+    if (!out) {
+      std::filesystem::remove(tmp, ec);
+      throw SceneError(tmp + ": cannot write scene image");
+    }
   }
-  std::filesystem::rename(tmp, file);
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw SceneError(file.string() + ": cannot write scene image: " + ec.message());
+  }
 }
 
 SceneImage load_or_build_scene_image(const Scene& scene, const SceneImageParams& params,
@@ -63,6 +77,10 @@ SceneImage load_or_build_scene_image(const Scene& scene, const SceneImageParams&
   const uint64_t key = scene_content_key(scene, params);
   const auto file = cache_file_for(cache_dir, key);
   std::string why_rebuild = "not cached yet";
+  std::error_code exists_ec;
+  if (std::filesystem::exists(file, exists_ec) && !std::filesystem::is_regular_file(file, exists_ec))
+    throw SceneError(file.string() + ": the scene cache entry is not a regular file (a FIFO or a folder?); "
+                     "remove it, or pass --no-cache or another --cache-dir");
   if (std::filesystem::exists(file)) {
     try {
       SceneImage cached = read_scene_image(file);

@@ -6,7 +6,9 @@
 namespace strata::transport {
 
 namespace {
+// Checked first: a horizon above 2^31 would never be reached by doubling a uint32_t.
 uint32_t round_up_pow2(uint32_t v) {
+  if (v > (1u << 30)) throw std::invalid_argument("ReservationCalendar: horizon above 2^30 cycles");
   uint32_t p = 64;
   while (p < v) p <<= 1;
   return p;

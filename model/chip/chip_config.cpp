@@ -3,6 +3,7 @@
 #include "firmware/abi/frame_abi.h"
 
 #include <fstream>
+#include <utility>
 
 #include "model/memory/stream_sram.h"
 
@@ -41,7 +42,8 @@ void require(bool ok, const std::string& message) {
 void EnergyConfig::validate() const {
   for (double v : {register_file_access_nj, fp_add_nj, fp_mul_nj, fp_cmp_nj, fp_div_nj, fp_inv_sqrt_nj,
                    int_mul_nj, int_div_nj, box_test_nj, triangle_test_nj})
-    if (!(v >= 0.0)) throw std::invalid_argument("energies must be >= 0 nJ");
+    // An upper bound too: 1e308 nJ per operation overflows the frame's sums to infinity.
+    if (!(v >= 0.0 && v <= 1e6)) throw std::invalid_argument("energies must be 0..1e6 nJ per operation, got " + std::to_string(v));
 }
 
 void ChipConfig::bind(ConfigBinder& b) {
@@ -144,11 +146,13 @@ void ChipConfig::finalize() {
   require(clock_ghz > 0.0 && clock_ghz <= 100.0, "clock_ghz: must be in (0, 100]");
   require(tp_stack_bytes >= 256 && tp_stack_bytes % 16 == 0,
           "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
-  require(timing.quantum_cycles >= 1, "timing.quantum_cycles: must be at least 1");
+  require(timing.quantum_cycles >= 1 && timing.quantum_cycles <= 65536,
+          "timing.quantum_cycles: must be 1..65536, got " + std::to_string(timing.quantum_cycles));
   require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");
   if (timing.mode == transport::TimingMode::kSampled) {
     const auto& t = timing;
-    require(t.sample_warmup_cycles + t.quantum_cycles <= t.sample_detail_cycles,
+    // In 64 bits: a warm-up near 2^32 must not wrap the sum and pass.
+    require(uint64_t{t.sample_warmup_cycles} + t.quantum_cycles <= t.sample_detail_cycles,
             "timing.sample_detail_cycles: must hold the warm-up plus one quantum (" +
                 std::to_string(t.sample_warmup_cycles) + " + " + std::to_string(t.quantum_cycles) + "), got " +
                 std::to_string(t.sample_detail_cycles));
@@ -178,6 +182,11 @@ void ChipConfig::finalize() {
   checked("memory.dram", [&] { dram.validate(); });
   checked("memory.interconnect", [&] { interconnect.validate(); });
   checked("energy", [&] { energy.validate(); });
+  // An L1 fill is one L2 line or less: a longer L1 line would straddle L2 lines.
+  for (const auto& [bytes, field] : {std::pair{l1d.line_bytes, "memory.l1d.line_bytes"},
+                                     std::pair{l1i.line_bytes, "memory.l1i.line_bytes"}})
+    require(bytes <= l2.line_bytes, std::string(field) + ": must be at most memory.l2.line_bytes (" +
+                                        std::to_string(l2.line_bytes) + "), got " + std::to_string(bytes));
   if (design.streams) {
     uint32_t capacity = 0;
     checked("memory.stream", [&] { capacity = memory::make_stream_layout(stream).capacity; });
@@ -195,6 +204,9 @@ ChipConfig load_chip_config(const std::filesystem::path& file, const std::vector
   ConfigBinder binder;
   config.bind(binder);
   if (!file.empty()) {
+    std::error_code ec;
+    if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+      throw ConfigError(file.string() + ": cannot open config file: not a regular file");
     std::ifstream in(file);
     if (!in) throw ConfigError(file.string() + ": cannot open config file");
     nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);

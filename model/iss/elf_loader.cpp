@@ -1,6 +1,7 @@
 #include "model/iss/elf_loader.h"
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -79,6 +80,9 @@ std::optional<uint32_t> ElfImage::symbol(const std::string& name) const {
 }
 
 ElfImage load_elf(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw ElfError(path + ": cannot open file: not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ElfError(path + ": cannot open file");
   std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -18,8 +18,18 @@ void need_pow2(const char* field, uint64_t v) {
 void need_positive(const char* field, uint64_t v) {
   if (v == 0) bad(field, "must be > 0", v);
 }
+void need_at_most(const char* field, uint64_t v, uint64_t most, const char* unit) {
+  if (v > most) bad(field, "must be at most " + std::to_string(most) + " " + unit, v);
+}
+// Calendars hold 2 x horizon slots each, one calendar per bank, port, link and channel.
+void need_horizon(const char* field, uint64_t v) {
+  need_positive(field, v);
+  need_at_most(field, v, kMaxCalendarHorizonCycles, "cycles");
+}
+void need_latency(const char* field, uint64_t v) { need_at_most(field, v, kMaxLatencyCycles, "cycles"); }
 void need_energy(const char* field, double nj) {
-  if (!(nj >= 0.0)) throw std::invalid_argument(std::string(field) + ": must be >= 0 nJ");
+  // Bounded: 1e308 nJ per access would overflow the frame's energy sums to infinity.
+  if (!(nj >= 0.0 && nj <= 1e6)) throw std::invalid_argument(std::string(field) + ": must be 0..1e6 nJ per access");
 }
 // Tags and banks use shifts and masks, so the geometry is in powers of two.
 void cache_geometry(const char* cache, uint32_t size, uint32_t banks, uint32_t line, uint32_t ways) {
@@ -28,6 +38,8 @@ void cache_geometry(const char* cache, uint32_t size, uint32_t banks, uint32_t l
   need_pow2((p + ".banks").c_str(), banks);
   need_pow2((p + ".line_bytes").c_str(), line);
   need_pow2((p + ".ways").c_str(), ways);
+  if (line < 16) bad((p + ".line_bytes").c_str(), "must be at least 16 (a ray's or an instruction's access must fit a line)", line);
+  if (line > 4096) bad((p + ".line_bytes").c_str(), "must be at most 4096", line);
   if (uint64_t{line} * ways * banks > size)
     bad((p + ".size_bytes").c_str(), "must hold at least one set per bank", size);
 }
@@ -39,19 +51,22 @@ const char* to_string(SchedulingPolicy p) {
 
 void L1DataCacheConfig::validate() const {
   cache_geometry("l1d", size_bytes, banks, line_bytes, 1);
-  need_positive("l1d.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("l1d.hit_latency_cycles", hit_latency_cycles);
+  need_horizon("l1d.calendar_horizon_cycles", calendar_horizon_cycles);
   need_energy("l1d.access_energy_nj", access_energy_nj);
 }
 
 void L1InstructionCacheConfig::validate() const {
   cache_geometry("l1i", size_bytes, banks, line_bytes, 1);
-  need_positive("l1i.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("l1i.hit_latency_cycles", hit_latency_cycles);
+  need_horizon("l1i.calendar_horizon_cycles", calendar_horizon_cycles);
   need_energy("l1i.access_energy_nj", access_energy_nj);
 }
 
 void L2Config::validate() const {
   cache_geometry("l2", size_bytes, banks, line_bytes, ways);
-  need_positive("l2.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("l2.hit_latency_cycles", hit_latency_cycles);
+  need_horizon("l2.calendar_horizon_cycles", calendar_horizon_cycles);
   if (access_energy_nj) need_energy("l2.access_energy_nj", *access_energy_nj);
   else (void)energy_per_access_nj();  // throws if the size is outside the table
 }
@@ -68,7 +83,9 @@ void StreamMemoryConfig::validate() const {
   if (banks > 1024) bad("stream.banks", "must be at most 1024", banks);
   need_positive("stream.ports", ports);
   if (ports > 65535) bad("stream.ports", "must be at most 65535", ports);
-  need_positive("stream.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_horizon("stream.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("stream.access_latency_cycles", access_latency_cycles);
+  need_latency("stream.query_latency_cycles", query_latency_cycles);
   if (access_energy_nj) need_energy("stream.access_energy_nj", *access_energy_nj);
   else (void)energy_per_access_nj();
 }
@@ -87,7 +104,8 @@ void DramConfig::validate() const {
         bytes_per_cycle);
   need_pow2("dram.interleave_bytes", interleave_bytes);
   need_pow2("dram.burst_bytes", burst_bytes);
-  need_positive("dram.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_horizon("dram.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("dram.latency_cycles", latency_cycles);
   need_energy("dram.access_energy_nj", access_energy_nj);
 }
 
@@ -96,7 +114,8 @@ void InterconnectConfig::validate() const {
   need_pow2("interconnect.l2_banks", l2_banks);
   need_pow2("interconnect.l2_line_bytes", l2_line_bytes);
   need_positive("interconnect.link_bytes_per_cycle", link_bytes_per_cycle);
-  need_positive("interconnect.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_horizon("interconnect.calendar_horizon_cycles", calendar_horizon_cycles);
+  need_latency("interconnect.hop_latency_cycles", hop_latency_cycles);
   need_energy("interconnect.transfer_energy_nj", transfer_energy_nj);
 }
 

@@ -10,6 +10,11 @@
 
 namespace strata::memory {
 
+// The documented ranges of the fields every module shares (docs/memory-system.md): a latency
+// beyond this would run for ever in simulated time, a horizon beyond it would not fit memory.
+constexpr uint32_t kMaxLatencyCycles = 65536;
+constexpr uint32_t kMaxCalendarHorizonCycles = 1u << 20;
+
 // Write-around: stores go through to the next level and never allocate; a present line stays
 // valid (the data lives in the backing store). TRaX's policy; see docs/memory-system.md.
 struct L1DataCacheConfig {

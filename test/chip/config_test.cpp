@@ -84,6 +84,43 @@ TEST(ChipConfig, SampledTimingWindowsMustFit) {
   EXPECT_EQ(error_of(trax, {"timing.sample_period_cycles=20000"}), "");
 }
 
+// Values that used to hang, wrap or fail only mid-simulation: each is refused up front,
+// naming the field (issue: hostile input, rows 3, 4, 10, 11).
+TEST(ChipConfig, OutOfRangeValuesAreRefusedNamingTheField) {
+  const std::string trax = config_dir() + "trax.json";
+  const std::string pipelines = config_dir() + "strata-pipelines.json";
+  const struct {
+    std::string file;
+    std::string set;
+    std::string expected;
+  } cases[] = {
+      // A 32-bit sum wrapped: warm-up 4294967000 + quantum 1000 passed as 704.
+      {trax, "timing.sample_warmup_cycles=4294967000", "timing.sample_detail_cycles: must hold the warm-up"},
+      {trax, "memory.l1d.calendar_horizon_cycles=4294967295", "l1d.calendar_horizon_cycles: must be at most 1048576 cycles"},
+      {trax, "memory.l2.calendar_horizon_cycles=2147483648", "l2.calendar_horizon_cycles: must be at most 1048576 cycles"},
+      {trax, "memory.dram.latency_cycles=4294967295", "dram.latency_cycles: must be at most 65536 cycles"},
+      {trax, "memory.l2.hit_latency_cycles=100000", "l2.hit_latency_cycles: must be at most 65536 cycles"},
+      {trax, "memory.interconnect.hop_latency_cycles=4294967295", "hop_latency_cycles: must be at most 65536"},
+      {trax, "tm.xu.fp_div.latency=4294967295", "xu.fp_div.latency must be at most 65536 cycles"},
+      {pipelines, "tm.pipelines.triangle.latency=4294967295", "pipelines.triangle.latency must be at most 65536"},
+      {pipelines, "tm.pipelines.triangle.latency=1000", "pipelines.triangle.latency must be at most a sixteenth"},
+      {trax, "timing.quantum_cycles=4294967295", "timing.quantum_cycles: must be 1..65536"},
+      {trax, "memory.l2.line_bytes=32", "memory.l1d.line_bytes: must be at most memory.l2.line_bytes (32)"},
+      {trax, "memory.l1i.line_bytes=1", "l1i.line_bytes: must be at least 16"},
+      {trax, "energy.fp_mul_nj=1e308", "energies must be 0..1e6 nJ"},
+      {trax, "memory.dram.access_energy_nj=1e308", "dram.access_energy_nj: must be 0..1e6 nJ"},
+  };
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.file, {"timing.mode=sampled", c.set});
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.set << " gave: " << e;
+  }
+}
+
+TEST(ChipConfig, AFolderAsTheConfigIsNamed) {
+  const std::string e = error_of(config_dir(), {});
+  EXPECT_NE(e.find("cannot open config file: not a regular file"), std::string::npos) << e;
+}
+
 TEST(ChipConfig, BadFilesAreNamed) {
   const auto dir = std::filesystem::temp_directory_path();
   const std::string bad_json = (dir / "strata-bad-config.json").string();

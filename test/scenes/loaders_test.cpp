@@ -177,6 +177,47 @@ TEST(LoaderObj, ZeroIndexIsAParseError) {
   expect_scene_error([&] { load_obj(s, file); }, {"zero.obj", "parse error"});
 }
 
+// tinyobjloader reads these as zeros; each must be an error that names the file and line.
+TEST(LoaderObj, NonFiniteOrMissingCoordinatesAreErrorsNamingTheLine) {
+  TempDir dir;
+  const struct {
+    const char* line;
+    const char* why;
+  } cases[] = {{"v nan 0 0", "'nan' is not a finite number"},
+               {"v 0 inf 0", "'inf' is not a finite number"},
+               {"v 0 0 -infinity", "'-infinity' is not a finite number"},
+               {"v a b c", "'a' is not a finite number"},
+               {"v 1 2", "vertex has 2 coordinates, needs 3"},
+               {"v 1e39 0 0", "'1e39' is not a finite number"},
+               {"v 1 2 3 0.5 x 0.5", "vertex value 'x'"}};
+  for (const auto& c : cases) {
+    const auto file = write_text(dir / "bad.obj", std::string(kQuad) + c.line + "\nf 1 2 3\n");
+    Scene s;
+    expect_scene_error([&] { load_obj(s, file); }, {"bad.obj:5: parse error", c.why});
+    EXPECT_TRUE(s.triangles.empty()) << c.line;
+  }
+}
+
+TEST(LoaderObj, IndicesBeyondTheVerticesAreErrorsNotWrappedOntoRealOnes) {
+  TempDir dir;
+  // 4294967299 = 2^32 + 3: tinyobjloader's 32-bit parse made it vertex 3.
+  for (const char* face : {"f 1 2 4294967299", "f 1 2 99999999999999999999999", "f 1 2 5/1", "f 1 2 x"}) {
+    const auto file = write_text(dir / "far.obj", std::string(kQuad) + face + "\n");
+    Scene s;
+    expect_scene_error([&] { load_obj(s, file); }, {"far.obj:5: parse error", "index"});
+  }
+}
+
+TEST(LoaderObj, ScientificNotationColoursAndForwardIndicesStillLoad) {
+  TempDir dir;
+  const auto file = write_text(dir / "ok.obj",
+                               "f 1 2 3\n"  // a face before its vertices: legal, if rare
+                               "v 0 0 0 1 0 0\nv 1e0 0 0 0 1 0\nv 0 1.0E+0 -0 0 0 1\n");
+  Scene s;
+  load_obj(s, file);
+  EXPECT_EQ(s.triangles.size(), 1u);
+}
+
 TEST(LoaderObj, OnlyDegenerateTrianglesAreDroppedThenRequireTrianglesFails) {
   TempDir dir;
   const auto file = write_text(dir / "flat.obj",

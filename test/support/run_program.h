@@ -1,7 +1,8 @@
 // Runs a program (the built strata-sim) in a child process, as a user would from a shell, and
 // collects its exit status and everything it printed (stdout and stderr, interleaved).
 // `file_size_limit` (bytes, 0: none) sets RLIMIT_FSIZE in the child with SIGXFSZ ignored, so a
-// write beyond it fails with EFBIG as a full disk would fail with ENOSPC.
+// write beyond it fails with EFBIG as a full disk would fail with ENOSPC. A child that runs
+// longer than `timeout_seconds` is killed by SIGALRM (a hang fails the test, not the suite).
 #pragma once
 
 #include <fcntl.h>
@@ -23,7 +24,8 @@ struct ProgramResult {
   bool ok() const { return exit_status == 0; }
 };
 
-inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t file_size_limit = 0) {
+inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t file_size_limit = 0,
+                                 unsigned timeout_seconds = 120) {
   int out[2];
   ProgramResult r;
   if (pipe(out) != 0) return r;
@@ -42,6 +44,7 @@ inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t 
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     setenv("SC_COPYRIGHT_MESSAGE", "DISABLE", 1);
+    alarm(timeout_seconds);  // survives the exec
     execv(argv[0], argv.data());
     _exit(127);
   }

@@ -1,0 +1,88 @@
+#include "scenes/obj_line_check.h"
+
+#include "scenes/scene.h"
+
+#include <cerrno>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace strata::scenes {
+namespace {
+
+// Finite as the float32 the scene stores (1e39 is a finite double but an infinite float);
+// an underflow to zero or a subnormal is fine.
+bool finite_number(const std::string& token) {
+  if (token.empty()) return false;
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  return end == begin + token.size() && std::isfinite(v) && std::fabs(v) <= double(FLT_MAX);
+}
+
+// The vertex part of a face token ("7", "7/2", "-1//3"): a whole number, kept in 64 bits.
+bool vertex_index(const std::string& token, int64_t* index) {
+  const std::string v = token.substr(0, token.find('/'));
+  if (v.empty()) return false;
+  const char* begin = v.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long long i = std::strtoll(begin, &end, 10);
+  if (end != begin + v.size() || errno == ERANGE) return false;
+  *index = i;
+  return true;
+}
+
+struct PendingIndex {
+  int64_t index;
+  size_t line;
+};
+
+}  // namespace
+
+void check_obj_lines(std::istream& in, const std::string& source) {
+  auto fail = [&](size_t line, const std::string& why) {
+    throw SceneError(source + ":" + std::to_string(line) + ": parse error: " + why);
+  };
+  std::string text;
+  size_t line_no = 0;
+  int64_t vertices = 0;
+  std::vector<PendingIndex> forward;  // positive indices beyond the vertices seen so far
+  while (std::getline(in, text)) {
+    ++line_no;
+    std::istringstream words(text);
+    std::string key;
+    if (!(words >> key)) continue;
+    if (key == "v") {
+      std::vector<std::string> values;
+      for (std::string w; words >> w;) values.push_back(w);
+      if (values.size() < 3) fail(line_no, "vertex has " + std::to_string(values.size()) + " coordinates, needs 3");
+      for (size_t i = 0; i < values.size(); ++i)
+        if (!finite_number(values[i]))
+          fail(line_no, "vertex " + std::string(i < 3 ? "coordinate" : "value") + " '" + values[i] +
+                            "' is not a finite number");
+      ++vertices;
+    } else if (key == "f" || key == "l" || key == "p") {
+      for (std::string w; words >> w;) {
+        int64_t i = 0;
+        if (!vertex_index(w, &i)) fail(line_no, "index '" + w + "' is not a whole number");
+        if (i == 0) fail(line_no, "index 0: OBJ indices start at 1");
+        if (i < 0 && -i > vertices)
+          fail(line_no, "relative index " + std::to_string(i) + " reaches before the first vertex (" +
+                            std::to_string(vertices) + " defined so far)");
+        if (i > vertices) forward.push_back({i, line_no});
+      }
+    }
+  }
+  for (const PendingIndex& p : forward)
+    if (p.index > vertices)
+      fail(p.line, "index " + std::to_string(p.index) + " is beyond the file's " + std::to_string(vertices) +
+                       " vertices");
+  in.clear();
+  in.seekg(0, std::ios::beg);
+}
+
+}  // namespace strata::scenes

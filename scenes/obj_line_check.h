@@ -1,0 +1,16 @@
+// The checks tinyobjloader does not make, done on the OBJ text before it parses it: it reads
+// `v nan 0 0`, `v 1 2` and `v a b c` as zeros, and wraps a face index beyond 32 bits (so
+// `f 1 2 4294967299` becomes vertex 3). Each of those is an error here that names the line.
+#pragma once
+
+#include <istream>
+#include <string>
+
+namespace strata::scenes {
+
+// Reads `in` to the end and rewinds it. Throws SceneError "<source>:<line>: ..." for a vertex
+// position that is not 3 finite numbers (a w or an RGB colour may follow), and for a face,
+// line or point index that is not a non-zero integer naming a vertex the file defines.
+void check_obj_lines(std::istream& in, const std::string& source);
+
+}  // namespace strata::scenes
