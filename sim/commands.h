@@ -8,10 +8,15 @@
 
 namespace strata::sim {
 
-// A run stopped by Ctrl-C after writing what it had; strata-sim exits with status 130.
+// A run stopped by a signal (Ctrl-C, SIGTERM) after writing what it had; strata-sim exits
+// with the shell's status for that signal, 128 + its number (130 for SIGINT, 143 for SIGTERM).
 class Interrupted : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  Interrupted(const std::string& what, int signal) : std::runtime_error(what), signal_(signal) {}
+  int exit_status() const { return 128 + signal_; }
+
+ private:
+  int signal_;
 };
 
 void add_scene_command(CLI::App& app);

@@ -23,7 +23,7 @@ int sc_main(int argc, char** argv) {
     return app.exit(e);
   } catch (const strata::sim::Interrupted& e) {
     std::cerr << "strata-sim: " << e.what() << "\n";
-    return 130;
+    return e.exit_status();
   } catch (const std::exception& e) {
     std::cerr << "strata-sim: error: " << e.what() << "\n";
     return 1;

@@ -1,5 +1,6 @@
 #include "sim/progress_monitor.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 
@@ -7,9 +8,10 @@ namespace strata::sim {
 namespace {
 
 // The one piece of global state: a signal handler can only talk through a flag like this.
-volatile std::sig_atomic_t g_sigint = 0;
-void on_sigint(int) { g_sigint = 1; }
-void (*g_previous_handler)(int) = SIG_DFL;
+volatile std::sig_atomic_t g_signal = 0;
+void on_signal(int signo) { g_signal = signo; }
+void (*g_previous_int)(int) = SIG_DFL;
+void (*g_previous_term)(int) = SIG_DFL;
 
 }  // namespace
 
@@ -20,12 +22,17 @@ ProgressMonitor::ProgressMonitor(sc_core::sc_module_name name, const chip::Chip&
 }
 
 void ProgressMonitor::arm() {
-  g_sigint = 0;
-  g_previous_handler = std::signal(SIGINT, on_sigint);
+  g_signal = 0;
+  g_previous_int = std::signal(SIGINT, on_signal);
+  g_previous_term = std::signal(SIGTERM, on_signal);
   start_ = std::chrono::steady_clock::now();
+  print(false);  // the first line says the simulation has started (and Ctrl-C now stops it cleanly)
 }
 
-void ProgressMonitor::disarm() { std::signal(SIGINT, g_previous_handler); }
+void ProgressMonitor::disarm() {
+  std::signal(SIGINT, g_previous_int);
+  std::signal(SIGTERM, g_previous_term);
+}
 
 void ProgressMonitor::print(bool final) {
   if (!show_) return;
@@ -44,17 +51,29 @@ void ProgressMonitor::print(bool final) {
 }
 
 void ProgressMonitor::run() {
-  const sc_core::sc_time step = sc_core::sc_time(1.0 / chip_.config().clock_ghz, sc_core::SC_NS) * double(interval_);
+  const sc_core::sc_time cycle = sc_core::sc_time(1.0 / chip_.config().clock_ghz, sc_core::SC_NS);
+  const uint64_t check = std::min(interval_, kStopCheckCycles);
+  uint64_t cycles = 0, next_print = interval_;
   for (;;) {
-    sc_core::wait(step);
+    // Never past the cycle limit, so a limited run stops at it exactly.
+    uint64_t step = check;
+    if (cycle_limit_ > 0) step = std::min(step, cycle_limit_ - cycles);
+    sc_core::wait(cycle * double(step));
+    cycles += step;
     if (chip_.finished()) {
       print(true);
       return;
     }
-    print(false);
-    if (g_sigint) {
-      interrupted_ = true;
-      if (show_) std::fprintf(stderr, "\ninterrupted: stopping the simulation and writing what exists\n");
+    if (cycles >= next_print) {
+      print(false);
+      next_print += interval_;
+    }
+    if (g_signal != 0 || (cycle_limit_ > 0 && cycles >= cycle_limit_)) {
+      signal_ = g_signal;
+      limit_reached_ = signal_ == 0;
+      if (show_)
+        std::fprintf(stderr, "\n%s: stopping the simulation and writing what exists\n",
+                     signal_ ? "interrupted" : "cycle limit reached");
       sc_core::sc_stop();
       return;
     }

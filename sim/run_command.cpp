@@ -34,6 +34,7 @@ struct RunOptions {
   std::string firmware;  // default: the design's kernel
   std::string vcd;
   uint64_t progress_cycles = 200000;
+  uint64_t max_cycles = 0;  // 0: no limit
   bool quiet = false;
   uint64_t vcd_window_cycles = 1000;
   uint64_t vcd_start = 0, vcd_end = ~uint64_t{0};
@@ -102,13 +103,14 @@ void run_frame(RunOptions o) {
   }
   ProgressMonitor progress("progress", chip, o.progress_cycles, !o.quiet && (o.progress || isatty(STDERR_FILENO) != 0),
                            isatty(STDERR_FILENO) != 0);
+  progress.set_cycle_limit(o.max_cycles);
   progress.arm();
   const auto t0 = std::chrono::steady_clock::now();
   sc_core::sc_start();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.disarm();
   if (vcd) sc_core::sc_close_vcd_trace_file(vcd);
-  const bool interrupted = progress.interrupted();
+  const bool interrupted = progress.interrupted() || progress.cycle_limit_reached();
   if (!chip.finished() && !interrupted) throw std::runtime_error("simulation failed: " + chip.error());
 
   const chip::FrameReport report(chip, wall, interrupted);
@@ -121,7 +123,12 @@ void run_frame(RunOptions o) {
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
 
-  if (interrupted) throw Interrupted("interrupted: partial image and statistics written to " + dir.string());
+  if (progress.cycle_limit_reached())
+    throw std::runtime_error("--max-cycles " + std::to_string(o.max_cycles) +
+                             ": the frame did not finish within the limit (firmware in a loop?); partial image "
+                             "and statistics written to " + dir.string());
+  if (interrupted)
+    throw Interrupted("interrupted: partial image and statistics written to " + dir.string(), progress.signal());
   if (o.check) {
     const RenderResult twin = render_native(loaded.image, o.settings);
     const kernels::RayCounters chip_rays = chip.ray_counters();
@@ -156,6 +163,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--vcd-start", opts->vcd_start, "first cycle the VCD records");
   cmd->add_option("--vcd-end", opts->vcd_end, "cycle after which the VCD records nothing");
   cmd->add_option("--progress-cycles", opts->progress_cycles, "simulated cycles between progress lines")
+      ->capture_default_str();
+  cmd->add_option("--max-cycles", opts->max_cycles,
+                  "stop with an error once this many cycles are simulated (0: no limit); partial outputs are written")
       ->capture_default_str();
   cmd->add_flag("--quiet", opts->quiet, "no progress lines");
   cmd->add_flag("--progress", opts->progress, "progress lines even when stderr is not a terminal (one per line)");

@@ -24,10 +24,14 @@ struct ProgramResult {
   bool ok() const { return exit_status == 0; }
 };
 
-inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t file_size_limit = 0,
-                                 unsigned timeout_seconds = 120) {
+// As run_program, and sends `signo` to the child once `trigger` appears in its output (at
+// most once); `*sent` says whether it was sent.
+inline ProgramResult run_program_signalled(const std::vector<std::string>& args, const std::string& trigger,
+                                           int signo, bool* sent, uint64_t file_size_limit = 0,
+                                           unsigned timeout_seconds = 120) {
   int out[2];
   ProgramResult r;
+  *sent = false;
   if (pipe(out) != 0) return r;
   const pid_t pid = fork();
   if (pid < 0) return r;
@@ -50,13 +54,25 @@ inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t 
   }
   close(out[1]);
   char buf[4096];
-  for (ssize_t n; (n = read(out[0], buf, sizeof buf)) > 0;) r.output.append(buf, static_cast<size_t>(n));
+  for (ssize_t n; (n = read(out[0], buf, sizeof buf)) > 0;) {
+    r.output.append(buf, static_cast<size_t>(n));
+    if (!*sent && !trigger.empty() && r.output.find(trigger) != std::string::npos) {
+      kill(pid, signo);
+      *sent = true;
+    }
+  }
   close(out[0]);
   int status = 0;
   waitpid(pid, &status, 0);
   if (WIFEXITED(status)) r.exit_status = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   return r;
+}
+
+inline ProgramResult run_program(const std::vector<std::string>& args, uint64_t file_size_limit = 0,
+                                 unsigned timeout_seconds = 120) {
+  bool sent = false;
+  return run_program_signalled(args, "", 0, &sent, file_size_limit, timeout_seconds);
 }
 
 }  // namespace strata::sim::testing
