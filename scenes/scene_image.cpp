@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cfloat>
 #include <chrono>
+#include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <utility>
 
 #include "scenes/content_hash.h"
 
@@ -122,15 +125,54 @@ void fill_header(SceneImageHeader* h, const Scene& scene, const Bounds& bounds) 
   copy3(h->background, scene.background);
 }
 
-uint64_t payload_checksum(const uint8_t* bytes, uint64_t size) {
-  ContentHash h;
-  h.add_bytes(bytes + sizeof(SceneImageHeader), size - sizeof(SceneImageHeader));
-  return h.value();
-}
-
 [[noreturn]] void invalid(const std::string& source, const std::string& what) {
   throw SceneError(source + ": invalid scene image: " + what);
 }
+
+uint64_t checksum_of(const uint8_t* bytes, uint64_t size) {
+  constexpr size_t field = offsetof(SceneImageHeader, payload_checksum);
+  const uint8_t zeros[sizeof(uint64_t)] = {};
+  ContentHash h;
+  h.add_bytes(bytes, field);
+  h.add_bytes(zeros, sizeof zeros);
+  h.add_bytes(bytes + field + sizeof zeros, size - field - sizeof zeros);
+  return h.value();
+}
+
+bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+// The header's values that the firmware and the renderer trust, each in its range: a
+// checksum proves the file is as written, not that a writer wrote sense.
+void check_header_values(const SceneImageHeader& h, const std::string& source) {
+  if (h.bvh_depth > kMaxBvhDepth)
+    invalid(source, "bvh_depth " + std::to_string(h.bvh_depth) + " exceeds " + std::to_string(kMaxBvhDepth));
+  if (h.max_leaf_triangles == 0 || h.max_leaf_triangles > kMaxLeafTriangles)
+    invalid(source, "max_leaf_triangles " + std::to_string(h.max_leaf_triangles) + " outside 1.." +
+                        std::to_string(kMaxLeafTriangles));
+  if (h.triangle_count == 0 || uint64_t(h.triangle_count) * sizeof(TriangleRecord) > h.triangle_bytes)
+    invalid(source, "triangle_count " + std::to_string(h.triangle_count) + " does not fit the triangle section (" +
+                        std::to_string(h.triangle_bytes) + " bytes)");
+  if (h.node_count == 0 || h.node_count > h.node_slots)
+    invalid(source, "node_count " + std::to_string(h.node_count) + " outside 1..node_slots (" +
+                        std::to_string(h.node_slots) + ")");
+  if (h.material_count == 0) invalid(source, "no materials");
+  for (const auto& [v, name] : {std::pair{h.bounds_min, "bounds_min"}, {h.bounds_max, "bounds_max"},
+                                {h.camera_eye, "camera_eye"}, {h.camera_target, "camera_target"},
+                                {h.camera_up, "camera_up"}, {h.light_position, "light_position"},
+                                {h.light_intensity, "light_intensity"}, {h.background, "background"}})
+    if (!finite3(v)) invalid(source, std::string(name) + " is not finite");
+  for (int i = 0; i < 3; ++i) {
+    if (h.bounds_min[i] > h.bounds_max[i]) invalid(source, "bounds_min exceeds bounds_max");
+    if (h.light_intensity[i] < 0.0f) invalid(source, "light_intensity is negative");
+    if (h.background[i] < 0.0f) invalid(source, "background is negative");
+  }
+  if (!(h.camera_vfov_degrees > 0.0f && h.camera_vfov_degrees < 180.0f))
+    invalid(source, "camera_vfov_degrees outside (0, 180)");
+  if (h.camera_eye[0] == h.camera_target[0] && h.camera_eye[1] == h.camera_target[1] &&
+      h.camera_eye[2] == h.camera_target[2])
+    invalid(source, "camera eye and target coincide");
+}
+
 
 }  // namespace
 
@@ -250,7 +292,7 @@ SceneImage build_scene_image(const Scene& scene, const SceneImageParams& params,
     node->treelet = index / per_treelet;
   }
   h->node_count = node_count;
-  h->payload_checksum = payload_checksum(bytes, image_bytes);
+  h->payload_checksum = scene_image_checksum(bytes, image_bytes);
   rep.layout_seconds = seconds_since(t0);
   return SceneImage(std::move(words), scene.name);
 }
@@ -276,7 +318,8 @@ SceneImage::SceneImage(std::vector<uint64_t> words, const std::string& source)
       uint64_t(h.triangle_offset) + h.triangle_bytes != have || h.triangle_bytes % T != 0 ||
       h.treelet_count != h.node_treelet_count + h.triangle_bytes / T)
     invalid(source, "inconsistent section layout");
-  if (payload_checksum(bytes(), have) != h.payload_checksum) invalid(source, "checksum mismatch (corrupt)");
+  if (scene_image_checksum(bytes(), have) != h.payload_checksum) invalid(source, "checksum mismatch (corrupt)");
+  check_header_values(h, source);
   // Structural checks, so that even a well-checksummed but wrong image cannot send a
   // traversal out of bounds.
   if (h.root_node >= h.node_slots) invalid(source, "root node out of range");
@@ -292,6 +335,11 @@ SceneImage::SceneImage(std::vector<uint64_t> words, const std::string& source)
       }
     }
   }
+}
+
+uint64_t scene_image_checksum(const uint8_t* bytes, uint64_t size) {
+  if (size < sizeof(SceneImageHeader)) throw SceneError("scene_image_checksum: shorter than a header");
+  return checksum_of(bytes, size);
 }
 
 }  // namespace strata::scenes

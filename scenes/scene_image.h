@@ -63,6 +63,9 @@ class SceneImage {
 SceneImage build_scene_image(const Scene& scene, const SceneImageParams& params,
                              SceneBuildReport* report);
 
+// The checksum stored in the header: the whole image, with the checksum field read as 0.
+uint64_t scene_image_checksum(const uint8_t* bytes, uint64_t size);
+
 // Cache key: hash of the scene content, the build parameters and the image version.
 uint64_t scene_content_key(const Scene& scene, const SceneImageParams& params);
 

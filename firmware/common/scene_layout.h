@@ -9,7 +9,7 @@
 namespace strata {
 
 constexpr uint32_t kSceneImageMagic = 0x53525453u;  // "STRS" little-endian
-constexpr uint32_t kSceneImageVersion = 2;
+constexpr uint32_t kSceneImageVersion = 3;  // 3: the checksum covers the header too
 
 // The traversal stack is one 32-bit word with a bit per level, so no leaf may lie deeper
 // than 32 edges below the root. The builder guarantees it.
@@ -86,7 +86,9 @@ struct SceneImageHeader {
   uint32_t treelet_bytes;     // treelet size (= L1 size), a power of two
   uint64_t image_bytes;       // whole blob, header included
   uint64_t content_key;       // hash of the build inputs (scene content + parameters)
-  uint64_t payload_checksum;  // ContentHash (scenes/content_hash.h) of every byte after the header
+  // ContentHash (scenes/content_hash.h) of the whole image, header included, with this field
+  // read as 0: a changed camera, light or root node is caught like a changed node.
+  uint64_t payload_checksum;
   uint32_t material_offset, material_count;
   uint32_t treelet_table_offset, treelet_count;
   uint32_t node_treelet_count;  // treelets [0, node_treelet_count) hold nodes

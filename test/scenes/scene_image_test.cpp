@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <cstddef>
 #include <unistd.h>
 
@@ -133,6 +134,54 @@ TEST_F(SceneImageFiles, CacheRebuildsTruncatedCorruptAndStaleFiles) {
   // A valid image of other content under this key (e.g. a renamed file) is stale.
   write_scene_image(build_scene_image(make_cornell({0.2, 1}), params, nullptr), f);
   EXPECT_NE(reload("stale").find("stale"), std::string::npos);
+}
+
+// The checksum covers the header: a changed camera float (byte 124 was the repro) is caught.
+TEST_F(SceneImageFiles, AChangedHeaderFieldFailsTheChecksum) {
+  const SceneImage good = build_scene_image(make_cornell({0.3, 1}), {}, nullptr);
+  for (const size_t offset : {offsetof(SceneImageHeader, camera_eye) + 4, offsetof(SceneImageHeader, root_node),
+                              offsetof(SceneImageHeader, background), offsetof(SceneImageHeader, light_intensity),
+                              offsetof(SceneImageHeader, bvh_depth)}) {
+    std::vector<uint64_t> words = good.words();
+    reinterpret_cast<uint8_t*>(words.data())[offset] ^= 0x40;
+    try {
+      SceneImage bad(std::move(words), "patched.strs");
+      ADD_FAILURE() << "accepted a header changed at byte " << offset;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("patched.strs: invalid scene image: checksum mismatch"), std::string::npos)
+          << offset << ": " << e.what();
+    }
+  }
+}
+
+// A writer that wrote nonsense and a right checksum over it: the values are checked too.
+TEST_F(SceneImageFiles, HeaderValuesOutOfRangeAreRefusedEvenWithAValidChecksum) {
+  const SceneImage good = build_scene_image(make_cornell({0.3, 1}), {}, nullptr);
+  const struct {
+    void (*patch)(SceneImageHeader&);
+    const char* expected;
+  } cases[] = {
+      {[](SceneImageHeader& h) { h.bvh_depth = 40; }, "bvh_depth 40 exceeds 32"},
+      {[](SceneImageHeader& h) { h.triangle_count = h.triangle_bytes; }, "does not fit the triangle section"},
+      {[](SceneImageHeader& h) { h.triangle_count = 0; }, "triangle_count 0"},
+      {[](SceneImageHeader& h) { h.background[1] = std::nanf(""); }, "background is not finite"},
+      {[](SceneImageHeader& h) { h.camera_vfov_degrees = 180.0f; }, "camera_vfov_degrees outside (0, 180)"},
+      {[](SceneImageHeader& h) { h.light_intensity[0] = -1.0f; }, "light_intensity is negative"},
+      {[](SceneImageHeader& h) { h.node_count = h.node_slots + 1; }, "node_count"},
+      {[](SceneImageHeader& h) { h.max_leaf_triangles = 16; }, "max_leaf_triangles 16"},
+  };
+  for (const auto& c : cases) {
+    std::vector<uint64_t> words = good.words();
+    auto& h = *reinterpret_cast<SceneImageHeader*>(words.data());
+    c.patch(h);
+    h.payload_checksum = scene_image_checksum(reinterpret_cast<const uint8_t*>(words.data()), words.size() * 8);
+    try {
+      SceneImage bad(std::move(words), "written.strs");
+      ADD_FAILURE() << "accepted: " << c.expected;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
