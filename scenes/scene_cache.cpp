@@ -46,7 +46,10 @@ SceneImage read_scene_image(const std::filesystem::path& file) {
 void write_scene_image(const SceneImage& image, const std::filesystem::path& file) {
   // Write beside the target and rename, so a crash never leaves a half-written cache file
   // under the final name (and a concurrent reader sees the old file or the new one).
-  const auto tmp = file.string() + ".tmp." + std::to_string(::getpid());
+  // Host and process in the name: Slurm tasks on several nodes may share the cache folder.
+  char host[256] = "host";
+  ::gethostname(host, sizeof host - 1);
+  const auto tmp = file.string() + ".tmp." + host + "." + std::to_string(::getpid());
   std::error_code ec;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

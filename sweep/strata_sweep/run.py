@@ -1,0 +1,137 @@
+"""One run of a sweep: its folder, named by a stable hash of its parameters, the strata-sim
+command, and the done marker that makes the sweep resumable.
+
+A run's folder holds params.json, log.txt, out/ (the simulator's outputs) and, at the end,
+either done.json (written atomically after stats.json was read back complete and finished) or
+error.json. Only done.json counts: a run without it is pending and runs again; a run with it is
+never run or counted twice."""
+import hashlib
+import json
+import os
+import subprocess
+import time
+
+from .spec import ROOT
+
+SIM = os.environ.get("STRATA_SIM") or os.path.join(ROOT, "build", "sim", "strata-sim")
+
+
+def config_digest(config):
+    path = config if os.path.isabs(config) else os.path.join(ROOT, config)
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()[:16]
+
+
+def with_digest(params):
+    """The parameters a key is made of: the config file's content too, so that an edited config
+    is a new run rather than a stale result."""
+    p = dict(params)
+    if "config" in p:
+        p["config_sha256"] = config_digest(p["config"])
+    return p
+
+
+def run_key(params):
+    text = json.dumps(params, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def folder_of(root, params):
+    return os.path.join(root, "runs", run_key(params))
+
+
+def command(params, out_dir, sim=None):
+    config = params["config"] if os.path.isabs(params["config"]) else os.path.join(ROOT, params["config"])
+    cmd = [sim or SIM, "run", "--config", config, "--scene", str(params["scene"]), "--out", out_dir, "--quiet"]
+    if "res" in params:
+        cmd += ["--res", str(params["res"])]
+    for key in ("spp", "seed", "max_path_vertices"):
+        if key in params:
+            cmd += ["--" + key.replace("_", "-"), str(params[key])]
+    if params.get("mode"):
+        cmd += ["--set", f"timing.mode={params['mode']}"]
+    for path, value in sorted(params.get("set", {}).items()):
+        cmd += ["--set", f"{path}={value if isinstance(value, str) else json.dumps(value)}"]
+    return cmd
+
+
+def write_json_atomically(path, obj):
+    tmp = f"{path}.tmp.{os.getpid()}"
+    with open(tmp, "w") as f:
+        json.dump(obj, f, indent=1, sort_keys=True)
+        f.write("\n")
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path)
+
+
+def is_done(folder):
+    return os.path.exists(os.path.join(folder, "done.json"))
+
+
+def read_finished_stats(folder):
+    """stats.json of a finished run, or None if it is missing, cut off or not a whole frame."""
+    try:
+        with open(os.path.join(folder, "out", "stats.json")) as f:
+            stats = json.load(f)
+    except (OSError, ValueError):
+        return None
+    if not isinstance(stats, dict) or stats.get("interrupted") or "frame" not in stats:
+        return None
+    return stats
+
+
+def execute(params, root, timeout, sim=None):
+    """Runs one frame into its folder. Returns (stats, error); writes done.json or error.json."""
+    folder = folder_of(root, params)
+    os.makedirs(folder, exist_ok=True)
+    write_json_atomically(os.path.join(folder, "params.json"), params)
+    for stale in ("error.json", "done.json"):
+        try:
+            os.remove(os.path.join(folder, stale))
+        except FileNotFoundError:
+            pass
+    env = dict(os.environ, SC_COPYRIGHT_MESSAGE="DISABLE")
+    t0 = time.monotonic()
+    error = None
+    try:
+        with open(os.path.join(folder, "log.txt"), "w") as log:
+            p = subprocess.run(command(params, os.path.join(folder, "out"), sim), stdout=log,
+                               stderr=subprocess.STDOUT, env=env, timeout=timeout)
+        if p.returncode != 0:
+            with open(os.path.join(folder, "log.txt"), errors="replace") as f:
+                tail = [line for line in f.read().strip().splitlines() if line.strip()][-2:]
+            error = f"strata-sim exited with {p.returncode}: " + " | ".join(tail)
+    except subprocess.TimeoutExpired:
+        error = f"timed out after {timeout} s"
+    except OSError as e:
+        error = f"cannot start strata-sim: {e}"
+    wall = time.monotonic() - t0
+    stats = None
+    if error is None:
+        stats = read_finished_stats(folder)
+        if stats is None:
+            error = "stats.json is missing, cut off or not a finished frame"
+    if error is not None:
+        write_json_atomically(os.path.join(folder, "error.json"), {"error": error, "wall_seconds": wall})
+        return None, error
+    write_json_atomically(os.path.join(folder, "done.json"),
+                          {"wall_seconds": wall, "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                           "host": os.uname().nodename})
+    return stats, None
+
+
+def load_result(root, params):
+    """(stats, done_info, error) of a run from its folder, whatever ran it."""
+    folder = folder_of(root, params)
+    if is_done(folder):
+        stats = read_finished_stats(folder)
+        if stats is not None:
+            with open(os.path.join(folder, "done.json")) as f:
+                return stats, json.load(f), None
+        return None, None, "done.json present but stats.json unreadable"
+    try:
+        with open(os.path.join(folder, "error.json")) as f:
+            return None, None, json.load(f)["error"]
+    except (OSError, ValueError, KeyError):
+        return None, None, None

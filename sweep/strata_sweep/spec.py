@@ -1,0 +1,124 @@
+"""The sweep specification: a JSON file naming a base config, axes, how they combine, the timing
+mode and an output folder (README, "Sweeps"). Errors name the file and the field."""
+import itertools
+import json
+import os
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DESIGNS_DIR = os.path.join(ROOT, "sim", "configs")
+
+# Axes that are strata-sim options; any other axis is a --set path (e.g. "memory.l2.size_bytes").
+OPTION_AXES = ("design", "config", "scene", "res", "spp", "seed", "max_path_vertices")
+TOP_KEYS = {"base_config", "axes", "combine", "timing_mode", "output", "fixed", "timeout_seconds", "plots",
+            "description"}
+MODES = ("lt", "precise", "sampled")
+
+
+class SpecError(ValueError):
+    pass
+
+
+class Spec:
+    def __init__(self, path, data):
+        self.path = path
+        self.data = data
+        where = lambda field: f"{path}: {field}"  # noqa: E731
+        unknown = set(data) - TOP_KEYS
+        if unknown:
+            raise SpecError(where(f"unknown key '{sorted(unknown)[0]}' (known: {', '.join(sorted(TOP_KEYS))})"))
+        self.combine = data.get("combine", "product")
+        if self.combine not in ("product", "zip"):
+            raise SpecError(where(f"combine: '{self.combine}' is not 'product' or 'zip'"))
+        self.mode = data.get("timing_mode", "lt")
+        if self.mode not in MODES:
+            raise SpecError(where(f"timing_mode: '{self.mode}' is not one of {', '.join(MODES)}"))
+        out = data.get("output")
+        if not isinstance(out, str) or not out:
+            raise SpecError(where("output: a folder name is required"))
+        base = os.path.dirname(os.path.abspath(path))
+        self.output = out if os.path.isabs(out) else os.path.normpath(os.path.join(base, out))
+        self.timeout = data.get("timeout_seconds", 6 * 3600)
+        if not isinstance(self.timeout, (int, float)) or self.timeout <= 0:
+            raise SpecError(where("timeout_seconds: must be a positive number"))
+        self.base_config = data.get("base_config")
+        if self.base_config is not None:
+            self.base_config = resolve_config(self.base_config, base, where("base_config"))
+        axes = data.get("axes", {})
+        if not isinstance(axes, dict) or not axes:
+            raise SpecError(where("axes: a non-empty object of axis name -> list of values"))
+        self.axes = []
+        for name, values in axes.items():
+            if not isinstance(values, list) or not values:
+                raise SpecError(where(f"axes.{name}: must be a non-empty list of values"))
+            self.axes.append((name, values))
+        if self.combine == "zip" and len({len(v) for _, v in self.axes}) != 1:
+            raise SpecError(where("axes: with combine 'zip' every axis needs the same number of values (" +
+                                  ", ".join(f"{n}: {len(v)}" for n, v in self.axes) + ")"))
+        names = [n for n, _ in self.axes]
+        if "design" in names and "config" in names:
+            raise SpecError(where("axes: give 'design' or 'config', not both"))
+        if self.base_config is None and "design" not in names and "config" not in names:
+            raise SpecError(where("base_config: required unless a 'design' or 'config' axis is given"))
+        if "scene" not in names and "scene" not in data.get("fixed", {}):
+            raise SpecError(where("axes.scene: every run needs a scene (an axis, or fixed.scene)"))
+        self.fixed = data.get("fixed", {})
+        if not isinstance(self.fixed, dict):
+            raise SpecError(where("fixed: must be an object"))
+        self.base_dir = base
+        self.plots = data.get("plots", [])
+
+    def runs(self):
+        """Every run's parameters, in spec order (duplicates kept; the runner runs them once)."""
+        names = [n for n, _ in self.axes]
+        value_lists = [v for _, v in self.axes]
+        combos = itertools.product(*value_lists) if self.combine == "product" else zip(*value_lists)
+        runs = []
+        for combo in combos:
+            params = {"mode": self.mode, "set": {}}
+            for k, v in self.fixed.items():
+                if k == "set":
+                    params["set"].update(v)
+                else:
+                    params[k] = v
+            if self.base_config:
+                params["config"] = self.base_config
+            for name, value in zip(names, combo):
+                if name == "design":
+                    params["config"] = resolve_config(value, self.base_dir, f"{self.path}: axes.design")
+                elif name == "config":
+                    params["config"] = resolve_config(value, self.base_dir, f"{self.path}: axes.config")
+                elif name in OPTION_AXES:
+                    params[name] = value
+                else:
+                    params["set"][name] = value
+            if "timing.mode" in params["set"]:
+                raise SpecError(f"{self.path}: set timing.mode through timing_mode, not an axis")
+            runs.append(params)
+        return runs
+
+
+def resolve_config(value, base_dir, where):
+    """A design name (sim/configs/<name>.json) or a path to a config file, made absolute."""
+    if not isinstance(value, str) or not value:
+        raise SpecError(f"{where}: expected a design name or a config path")
+    candidates = [value if os.path.isabs(value) else os.path.join(base_dir, value),
+                  os.path.join(ROOT, value), os.path.join(DESIGNS_DIR, value + ".json")]
+    for c in candidates:
+        if os.path.isfile(c):
+            c = os.path.normpath(os.path.abspath(c))
+            # Inside the checkout, relative to it: a run's key must not depend on where it lives.
+            return os.path.relpath(c, ROOT) if c.startswith(ROOT + os.sep) else c
+    raise SpecError(f"{where}: '{value}' is neither a design in sim/configs nor a config file")
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except OSError as e:
+        raise SpecError(f"{path}: cannot read: {e.strerror}")
+    except json.JSONDecodeError as e:
+        raise SpecError(f"{path}: not valid JSON: {e}")
+    if not isinstance(data, dict):
+        raise SpecError(f"{path}: the spec must be a JSON object")
+    return Spec(path, data)

@@ -1,0 +1,252 @@
+#!/usr/bin/python3
+"""Tests of strata-sweep (sweep/strata_sweep) with a stand-in for strata-sim: a script that
+writes a stats.json, fails, hangs or writes half a file, as the scene name says. The real
+Slurm cluster test is test_slurm_cluster.py. Run by CTest (Sweep.Runner) or directly."""
+import csv
+import json
+import os
+import stat
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from strata_sweep import cli, run as run_mod, slurm, spec as spec_mod  # noqa: E402
+
+FAKE_SIM = textwrap.dedent("""\
+    #!/usr/bin/python3
+    import json, os, sys, time
+    a = sys.argv
+    out = a[a.index("--out") + 1]
+    scene = a[a.index("--scene") + 1]
+    with open(os.path.join(os.path.dirname(__file__), "calls.log"), "a") as f:
+        f.write(" ".join(a[1:]) + "\\n")
+    if scene == "broken":
+        print("strata-sim: error: scene broken: no triangles", file=sys.stderr)
+        sys.exit(1)
+    if scene == "hang":
+        time.sleep(60)
+    os.makedirs(out, exist_ok=True)
+    if scene == "cut":
+        open(os.path.join(out, "stats.json"), "w").write('{"frame": {"cyc')
+        sys.exit(0)
+    if scene == "flaky" and not os.path.exists(os.path.join(os.path.dirname(__file__), "flaky.ok")):
+        sys.exit(-9 % 256)
+    sets = [a[i + 1] for i in range(len(a)) if a[i] == "--set"]
+    stats = {"frame": {"cycles": 1000 + len(" ".join(sets)), "frames_per_second": 5.0},
+             "memory": {"dram": {"bytes": 64 * len(sets)}},
+             "units": {"frame.cycles": "cycles", "frame.frames_per_second": "1/s", "memory.dram.bytes": "bytes"}}
+    json.dump(stats, open(os.path.join(out, "stats.json"), "w"))
+""")
+
+
+class Fixture(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.sim = os.path.join(self.dir, "strata-sim")
+        with open(self.sim, "w") as f:
+            f.write(FAKE_SIM)
+        os.chmod(self.sim, os.stat(self.sim).st_mode | stat.S_IEXEC)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write_spec(self, name="spec.json", **fields):
+        data = {"axes": {"design": ["trax"], "scene": ["a", "b"], "memory.l2.size_bytes": [524288, 1048576]},
+                "timing_mode": "lt", "output": "out"}
+        data.update(fields)
+        path = os.path.join(self.dir, name)
+        with open(path, "w") as f:
+            json.dump(data, f)
+        return path
+
+    def sweep(self, spec, *extra):
+        return cli.main([spec, "--sim", self.sim, "--jobs", "2", *extra])
+
+    def calls(self):
+        p = os.path.join(self.dir, "calls.log")
+        return open(p).read().splitlines() if os.path.exists(p) else []
+
+    def rows(self):
+        with open(os.path.join(self.dir, "out", "results.csv")) as f:
+            return list(csv.DictReader(f))
+
+
+class SpecTest(Fixture):
+    def test_product_and_zip(self):
+        s = spec_mod.load(self.write_spec())
+        self.assertEqual(len(s.runs()), 4)
+        z = spec_mod.load(self.write_spec(combine="zip", axes={"design": ["trax", "strata-streams"],
+                                                                 "scene": ["a", "b"]}))
+        runs = z.runs()
+        self.assertEqual([(os.path.basename(r["config"]), r["scene"]) for r in runs],
+                         [("trax.json", "a"), ("strata-streams.json", "b")])
+
+    def test_errors_name_the_file_and_field(self):
+        cases = [({"combine": "cross"}, "combine: 'cross'"),
+                 ({"timing_mode": "fast"}, "timing_mode: 'fast'"),
+                 ({"output": ""}, "output:"),
+                 ({"axes": {"design": ["nope"], "scene": ["a"]}}, "axes.design: 'nope'"),
+                 ({"axes": {"design": ["trax"], "scene": []}}, "axes.scene: must be a non-empty list"),
+                 ({"axes": {"design": ["trax"]}}, "axes.scene: every run needs a scene"),
+                 ({"combine": "zip", "axes": {"design": ["trax"], "scene": ["a", "b"]}}, "same number of values"),
+                 ({"colour": 1}, "unknown key 'colour'")]
+        for fields, expected in cases:
+            with self.subTest(expected=expected):
+                with self.assertRaises(spec_mod.SpecError) as e:
+                    spec_mod.load(self.write_spec(**fields)).runs()
+                self.assertIn("spec.json: ", str(e.exception))
+                self.assertIn(expected, str(e.exception))
+
+    def test_bad_spec_exits_2(self):
+        with open(os.path.join(self.dir, "bad.json"), "w") as f:
+            f.write("{")
+        self.assertEqual(cli.main([os.path.join(self.dir, "bad.json"), "--sim", self.sim]), 2)
+
+    def test_keys_are_stable_and_follow_the_config_content(self):
+        s = spec_mod.load(self.write_spec())
+        a = [run_mod.run_key(run_mod.with_digest(p)) for p in s.runs()]
+        b = [run_mod.run_key(run_mod.with_digest(p)) for p in spec_mod.load(self.write_spec()).runs()]
+        self.assertEqual(a, b)
+        self.assertEqual(len(set(a)), 4)
+        cfg = os.path.join(self.dir, "mine.json")
+        with open(cfg, "w") as f:
+            f.write('{"tms": 4}')
+        p = {"config": cfg, "scene": "a"}
+        before = run_mod.run_key(run_mod.with_digest(p))
+        with open(cfg, "w") as f:
+            f.write('{"tms": 8}')
+        self.assertNotEqual(before, run_mod.run_key(run_mod.with_digest(p)))
+
+
+class LocalTest(Fixture):
+    def test_runs_writes_results_with_units_and_resumes(self):
+        spec = self.write_spec(plots=[{"name": "fps", "x": "set memory.l2.size_bytes", "y": "frame.frames_per_second",
+                                       "series": ["scene"], "log_x": True}])
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual(len(self.calls()), 4)
+        rows = self.rows()
+        self.assertEqual(len(rows), 4)
+        self.assertIn("frame.cycles [cycles]", rows[0])
+        self.assertIn("memory.dram.bytes [bytes]", rows[0])
+        self.assertEqual({r["status"] for r in rows}, {"done"})
+        for r in rows:
+            folder = os.path.join(self.dir, "out", "runs", r["run"])
+            with open(os.path.join(folder, "params.json")) as f:
+                self.assertEqual(run_mod.run_key(json.load(f)), r["run"])
+        self.assertTrue(os.path.getsize(os.path.join(self.dir, "out", "fps.png")) > 1000)
+        with open(os.path.join(self.dir, "out", "results.json")) as f:
+            self.assertEqual(len(json.load(f)), 4)
+        # Resumed: nothing runs again, and nothing is counted twice.
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual(len(self.calls()), 4)
+        self.assertEqual(len(self.rows()), 4)
+
+    def test_the_command_carries_mode_and_sets(self):
+        self.assertEqual(self.sweep(self.write_spec(timing_mode="precise")), 0)
+        call = self.calls()[0]
+        self.assertIn("--set timing.mode=precise", call)
+        self.assertIn("--set memory.l2.size_bytes=", call)
+        self.assertIn("sim/configs/trax.json", call)
+
+    def test_failures_are_recorded_and_the_others_go_on(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "broken", "cut", "b"]})
+        self.assertEqual(self.sweep(spec), 1)
+        rows = {r["scene"]: r for r in self.rows()}
+        self.assertEqual(rows["a"]["status"], "done")
+        self.assertEqual(rows["b"]["status"], "done")
+        self.assertEqual(rows["broken"]["status"], "failed")
+        self.assertIn("exited with 1", rows["broken"]["error"])
+        self.assertIn("no triangles", rows["broken"]["error"])
+        self.assertIn("cut off", rows["cut"]["error"])
+        # A failed run has no done marker: the next invocation tries it again, and only it.
+        n = len(self.calls())
+        self.assertEqual(self.sweep(spec), 1)
+        self.assertEqual(len(self.calls()) - n, 2)
+
+    def test_a_timeout_is_a_failure_with_its_reason(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["hang", "a"]}, timeout_seconds=1)
+        self.assertEqual(self.sweep(spec), 1)
+        rows = {r["scene"]: r for r in self.rows()}
+        self.assertIn("timed out after 1 s", rows["hang"]["error"])
+        self.assertEqual(rows["a"]["status"], "done")
+
+    def test_a_crashed_run_is_retried_and_then_counted_once(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["flaky", "a"]})
+        self.assertEqual(self.sweep(spec), 1)
+        open(os.path.join(self.dir, "flaky.ok"), "w").close()
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual([r["status"] for r in self.rows()], ["done", "done"])
+
+    def test_ctrl_c_keeps_finished_runs(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "hang"]})
+        env = dict(os.environ, PYTHONPATH=HERE)
+        p = subprocess.Popen([sys.executable, "-m", "strata_sweep", spec, "--sim", self.sim, "--jobs", "2"],
+                             env=env, stderr=subprocess.PIPE, text=True, start_new_session=True)
+        # Wait until the good run is done, then Ctrl-C the whole group as a terminal would.
+        import time
+        for _ in range(200):
+            if any(run_mod.is_done(os.path.join(self.dir, "out", "runs", d))
+                   for d in os.listdir(os.path.join(self.dir, "out", "runs"))
+                   if os.path.isdir(os.path.join(self.dir, "out", "runs", d))) if os.path.isdir(
+                    os.path.join(self.dir, "out", "runs")) else False:
+                break
+            time.sleep(0.05)
+        os.killpg(p.pid, 2)
+        _, err = p.communicate(timeout=30)
+        self.assertEqual(p.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        statuses = {r["scene"]: r["status"] for r in self.rows()}
+        self.assertEqual(statuses["a"], "done")
+        self.assertNotEqual(statuses["hang"], "done")
+
+
+class SlurmScriptTest(Fixture):
+    def test_dry_run_writes_an_array_over_the_pending_runs_only(self):
+        spec = self.write_spec()
+        self.assertEqual(self.sweep(self.write_spec("one.json", axes={"design": ["trax"], "scene": ["a"],
+                                                                      "memory.l2.size_bytes": [524288]})), 0)
+        rc = cli.main([spec, "--sim", self.sim, "--backend", "slurm", "--dry-run", "--partition", "fast",
+                       "--time", "01:00:00", "--mem", "2G", "--max-running", "3"])
+        self.assertEqual(rc, 0)
+        d = os.path.join(self.dir, "out", "slurm")
+        script = [f for f in os.listdir(d) if f.startswith("job-")][0]
+        text = open(os.path.join(d, script)).read()
+        self.assertIn("#SBATCH --array=0-2%3", text)  # 4 runs, one already done
+        self.assertIn("#SBATCH --partition=fast", text)
+        self.assertIn("#SBATCH --time=01:00:00", text)
+        self.assertIn("#SBATCH --mem=2G", text)
+        self.assertIn("-m strata_sweep.task", text)
+        batch = [f for f in os.listdir(d) if f.startswith("batch-")][0]
+        with open(os.path.join(d, batch)) as f:
+            self.assertEqual(len(json.load(f)["runs"]), 3)
+
+    def test_a_task_runs_its_entry_and_never_a_finished_one_twice(self):
+        from strata_sweep import task
+        runs = [run_mod.with_digest(p) for p in spec_mod.load(self.write_spec()).runs()]
+        root = os.path.join(self.dir, "out")
+        batch = os.path.join(self.dir, "batch.json")
+        with open(batch, "w") as f:
+            json.dump({"runs": runs, "timeout_seconds": 60, "sim": self.sim}, f)
+        self.assertEqual(task.main(["task", root, batch, "1"]), 0)
+        self.assertTrue(run_mod.is_done(run_mod.folder_of(root, runs[1])))
+        self.assertEqual(task.main(["task", root, batch, "1"]), 0)
+        self.assertEqual(len(self.calls()), 1)
+
+    def test_missing_sbatch_is_a_clear_error(self):
+        env_path = os.environ.get("PATH", "")
+        os.environ["PATH"] = self.dir
+        try:
+            with self.assertRaises(slurm.SlurmError) as e:
+                slurm.submit(os.path.join(self.dir, "x.sh"))
+            self.assertIn("sbatch not found", str(e.exception))
+        finally:
+            os.environ["PATH"] = env_path
+
+
+if __name__ == "__main__":
+    unittest.main()
