@@ -205,6 +205,41 @@ class LocalTest(Fixture):
         self.assertNotEqual(statuses["hang"], "done")
 
 
+class FaultTest(Fixture):
+    def sweep_process(self, spec):
+        env = dict(os.environ, PYTHONPATH=HERE)
+        return subprocess.Popen([sys.executable, "-m", "strata_sweep", spec, "--sim", self.sim, "--jobs", "2"],
+                                env=env, stderr=subprocess.DEVNULL, start_new_session=True)
+
+    def test_two_sweeps_on_one_output_folder_run_each_frame_once(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "b", "c", "d", "e", "f"]})
+        first, second = self.sweep_process(spec), self.sweep_process(spec)
+        self.assertEqual(first.wait(timeout=120), 0)
+        self.assertEqual(second.wait(timeout=120), 0)
+        self.assertEqual(len(self.calls()), 6)  # each frame simulated exactly once
+        self.assertEqual([r["status"] for r in self.rows()], ["done"] * 6)
+
+    def test_a_sweep_killed_half_way_resumes_and_counts_each_run_once(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "hang", "b"]})
+        p = self.sweep_process(spec)
+        import time
+        runs = os.path.join(self.dir, "out", "runs")
+        for _ in range(400):  # until two runs are done and "hang" is in flight
+            if os.path.isdir(runs) and sum(run_mod.is_done(os.path.join(runs, d)) for d in os.listdir(runs)) >= 2:
+                break
+            time.sleep(0.05)
+        os.killpg(p.pid, 9)  # no clean-up at all: the machine went away
+        p.wait()
+        n = len(self.calls())
+        with open(self.sim) as f:
+            text = f.read()
+        with open(self.sim, "w") as f:  # the frame that was killed now finishes
+            f.write(text.replace('if scene == "hang":', 'if scene == "never":'))
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual(len(self.calls()) - n, 1)  # only the killed run ran again
+        self.assertEqual([r["status"] for r in self.rows()], ["done"] * 3)
+
+
 class SlurmScriptTest(Fixture):
     def test_dry_run_writes_an_array_over_the_pending_runs_only(self):
         spec = self.write_spec()

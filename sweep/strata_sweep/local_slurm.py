@@ -93,6 +93,13 @@ class LocalSlurm:
             f.write("\n".join(lines) + "\n")
 
     def start(self, timeout=60):
+        try:
+            return self._start(timeout)
+        except BaseException:
+            self.stop()  # every daemon started so far, even when starting failed
+            raise
+
+    def _start(self, timeout):
         key = self._write_munge_key()
         self._write_conf()
         d = os.path.join(self.dir, "munge")

@@ -5,6 +5,7 @@ A run's folder holds params.json, log.txt, out/ (the simulator's outputs) and, a
 either done.json (written atomically after stats.json was read back complete and finished) or
 error.json. Only done.json counts: a run without it is pending and runs again; a run with it is
 never run or counted twice."""
+import fcntl
 import hashlib
 import json
 import os
@@ -82,9 +83,23 @@ def read_finished_stats(folder):
 
 
 def execute(params, root, timeout, sim=None):
-    """Runs one frame into its folder. Returns (stats, error); writes done.json or error.json."""
+    """Runs one frame into its folder, unless it is done. Returns (stats, error).
+
+    The run holds an exclusive lock on its folder while it runs, so two sweeps sharing an
+    output folder (or a local sweep and a Slurm task) never run one frame at once: the second
+    waits for the first, then finds it done and counts it once."""
     folder = folder_of(root, params)
     os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if is_done(folder):
+            stats = read_finished_stats(folder)
+            if stats is not None:
+                return stats, None
+        return _execute_locked(params, folder, timeout, sim)
+
+
+def _execute_locked(params, folder, timeout, sim):
     write_json_atomically(os.path.join(folder, "params.json"), params)
     for stale in ("error.json", "done.json"):
         try:
