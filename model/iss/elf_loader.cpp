@@ -1,6 +1,7 @@
 #include "model/iss/elf_loader.h"
 
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -129,6 +130,14 @@ ElfImage parse_elf(const std::string& path, const std::vector<uint8_t>& file) {
     image.segments.push_back(std::move(seg));
   }
   if (image.segments.empty()) r.fail("no loadable (PT_LOAD) segments");
+  const bool any_code = std::any_of(image.segments.begin(), image.segments.end(),
+                                    [](const ElfSegment& s) { return s.executable; });
+  if (!any_code)
+    for (ElfSegment& s : image.segments)
+      if (s.vaddr <= image.entry && image.entry - s.vaddr < s.memsz) {
+        s.executable = s.writable = s.flags_inferred = true;
+        break;
+      }
   read_symbols(r, shoff, shentsize, shnum, image);
   return image;
 }

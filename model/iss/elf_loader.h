@@ -1,5 +1,10 @@
 // Reads a little-endian ELF32 RISC-V executable: its PT_LOAD segments, entry point and
 // symbol table. Every error names the file.
+//
+// Which segments are code: those with PF_X. Real toolchain output does not always say so
+// (the official riscv-tests, linked with their own link.ld by binutils 2.40, have one PT_LOAD
+// with p_flags 0), so when no segment has PF_X, the segment holding the entry point is code
+// (and is also writable data, as such a file's flags give no other answer).
 #pragma once
 
 #include <cstdint>
@@ -22,6 +27,7 @@ struct ElfSegment {
   std::vector<uint8_t> bytes;     // p_filesz bytes from the file
   bool executable = false;
   bool writable = false;
+  bool flags_inferred = false;  // p_flags said nothing; executable because it holds the entry
 };
 
 struct ElfImage {

@@ -138,6 +138,10 @@ bool Hart<Memory>::csr_access(const Decoded& d, uint32_t& cause) {
     if (d.op == Op::kCsrrc || d.op == Op::kCsrrci) value = old & ~operand;
     if (!write_csr(number, value)) return false;
     if (number <= csr::kFcsr) mstatus_ |= mstatus::kFsDirty;
+    // The privileged spec: a counter write takes effect after the writing instruction, whose
+    // own increment is lost, so the next instruction reads the written value (not value + 1).
+    if (number == csr::kMinstret || number == csr::kMinstreth) --instret_offset_;
+    if (number == csr::kMcycle || number == csr::kMcycleh) --cycle_offset_;
   }
   x_[d.rd] = old;
   return true;

@@ -204,5 +204,34 @@ TEST(IssElf, RunsALoadedProgramToTohost) {
   std::remove(path.c_str());
 }
 
+// The riscv-tests linked by binutils 2.40 with their own link.ld: one PT_LOAD, p_flags 0 (the
+// code and tohost in one segment). Its code is the segment holding the entry point.
+TEST(IssElf, ASegmentWithoutFlagsHoldingTheEntryIsCode) {
+  using namespace enc;
+  ElfSpec spec;
+  spec.segments.push_back({0x10000, {lui(10, 0x10000), addi(11, 0, (5 << 1) | 1), sw(11, 10, 0x40), jal(0, 0)}, 128, 0});
+  spec.symbols = {{"_start", 0x10000}, {"tohost", 0x10040}};
+  const ElfImage image = parse_elf("riscv-test.elf", build_elf(spec));
+  ASSERT_EQ(image.segments.size(), 1u);
+  EXPECT_TRUE(image.segments[0].executable);
+  EXPECT_TRUE(image.segments[0].writable);
+  EXPECT_TRUE(image.segments[0].flags_inferred);
+  Program p = make_program(image, 4096);
+  Hart<FlatMemory> hart(p.code, p.memory);
+  prepare_hart(hart, p);
+  const RunResult r = hart.run(100);
+  EXPECT_EQ(r.reason, StopReason::kToHost);
+  EXPECT_EQ(r.exit_code, 5u);
+}
+
+TEST(IssElf, FlagsAreNeverInferredWhenSomeSegmentSaysExecutable) {
+  ElfSpec spec = tohost_program();
+  spec.segments[1].flags = 0;  // a data segment without flags stays data
+  const ElfImage image = parse_elf("prog.elf", build_elf(spec));
+  EXPECT_TRUE(image.segments[0].executable);
+  EXPECT_FALSE(image.segments[1].executable);
+  EXPECT_FALSE(image.segments[1].flags_inferred);
+}
+
 }  // namespace
 }  // namespace strata::iss::testing

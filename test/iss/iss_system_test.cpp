@@ -53,10 +53,22 @@ TEST(IssCsr, CountersCountRetiredInstructions) {
   EXPECT_EQ(m.hart.x(1), 2u);  // the reading instruction has not retired yet
   EXPECT_EQ(m.hart.x(2), 3u);
   EXPECT_EQ(m.hart.x(3), 4u);  // mcycle = retired instructions in a functional run
-  EXPECT_EQ(m.hart.x(5), 1001u);
+  EXPECT_EQ(m.hart.x(5), 1000u);  // the written value: the writing instruction's increment is lost
   EXPECT_EQ(m.hart.x(6), 0u);
   m.hart.add_stall_cycles(50);
   EXPECT_EQ(m.csr(csr::kMcycle), 9u + 50u);
+}
+
+TEST(IssCsr, AWrittenCycleCountIsWhatTheNextInstructionReads) {
+  Machine m({csrrw(0, csr::kMcycle, 4), csrrs(5, csr::kMcycle, 0), nop(), csrrs(6, csr::kMcycle, 0),
+             csrrw(0, csr::kMinstreth, 7), csrrs(8, csr::kMinstreth, 0), csrrs(9, csr::kMinstret, 0)});
+  m.hart.set_x(4, 500);
+  m.hart.set_x(7, 2);
+  ASSERT_EQ(m.run().reason, StopReason::kHalt);
+  EXPECT_EQ(m.hart.x(5), 500u);
+  EXPECT_EQ(m.hart.x(6), 502u);  // two more instructions retired since
+  EXPECT_EQ(m.hart.x(8), 2u);
+  EXPECT_EQ(m.hart.x(9), 5u);  // low half: 4 before the write, whose own count is lost, +1 (the read)
 }
 
 TEST(IssCsr, FloatingPointCsrsComposeAndNeedFs) {
