@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The STRaTA paper's experiments (Kopta et al., HPG 2013), each one command that runs its
-frames (experiments/sweep.py: resumable, one folder per frame), writes a CSV with one row per
+frames (on strata-sweep's runner through experiments/sweep.py: resumable, one folder per frame), writes a CSV with one row per
 frame (its parameters, then every statistic with its unit), and draws the figure as a PNG.
 
     experiments/paper.py EXPERIMENT|all [--res 128x128] [--scenes sibenik,hairball,vegetation]

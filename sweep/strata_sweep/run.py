@@ -12,13 +12,14 @@ import os
 import subprocess
 import time
 
-from .spec import ROOT
+from .spec import ROOT, resolve_config
 
 SIM = os.environ.get("STRATA_SIM") or os.path.join(ROOT, "build", "sim", "strata-sim")
 
 
 def config_digest(config):
-    path = config if os.path.isabs(config) else os.path.join(ROOT, config)
+    path = resolve_config(config, ROOT, "config")
+    path = path if os.path.isabs(path) else os.path.join(ROOT, path)
     with open(path, "rb") as f:
         return hashlib.sha256(f.read()).hexdigest()[:16]
 
@@ -42,7 +43,8 @@ def folder_of(root, params):
 
 
 def command(params, out_dir, sim=None):
-    config = params["config"] if os.path.isabs(params["config"]) else os.path.join(ROOT, params["config"])
+    config = resolve_config(params["config"], ROOT, "config")  # a design name or a config file
+    config = config if os.path.isabs(config) else os.path.join(ROOT, config)
     cmd = [sim or SIM, "run", "--config", config, "--scene", str(params["scene"]), "--out", out_dir, "--quiet"]
     if "res" in params:
         cmd += ["--res", str(params["res"])]
