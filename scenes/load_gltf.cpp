@@ -1,5 +1,7 @@
 #include "scenes/load_gltf.h"
 
+#include "scenes/gltf_preflight.h"
+
 #include "scenes/validate.h"
 
 #include <tiny_gltf.h>
@@ -371,6 +373,7 @@ void load_gltf(Scene& scene, const fs::path& file) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) throw SceneError(source + ": file not found");
 
+  gltf_preflight(file, ext == ".glb");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
   tinygltf::Model model;

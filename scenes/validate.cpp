@@ -74,7 +74,13 @@ void append_validated(Scene& scene, Scene&& part, const std::string& source) {
 }
 
 void require_triangles(const Scene& scene, const std::string& source) {
-  if (scene.triangles.empty()) throw SceneError(source + ": scene has no triangles");
+  if (scene.triangles.empty()) {
+    // The warnings say why (zero-area faces dropped, point or line primitives skipped), and
+    // an error ends the program before they would be printed: so they go in its message.
+    std::string why;
+    for (const std::string& w : scene.warnings) why += "\n  " + w;
+    throw SceneError(source + ": scene has no triangles" + (why.empty() ? "" : "; the loader said:" + why));
+  }
 }
 
 }  // namespace strata::scenes

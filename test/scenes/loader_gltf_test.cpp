@@ -1,6 +1,7 @@
 // glTF loader tests. Each test builds its document with GltfBuilder and writes it as
 // .gltf (base64 data URI) and/or .glb into a fresh temporary directory.
 #include "scenes/load_gltf.h"
+#include "scenes/validate.h"
 #include "loader_fixtures.h"
 
 #include <gtest/gtest.h>
@@ -365,6 +366,56 @@ TEST(LoaderGltf, RequiredGeometryCompressionExtensionIsAnError) {
   Scene s;
   expect_scene_error([&] { load_gltf(s, write_text(dir / "draco.gltf", g.gltf())); },
                      {"draco.gltf", "KHR_draco_mesh_compression"});
+}
+
+// A real Draco file's accessors have no bufferView: tinygltf used to fail on that first, with
+// "accessor[0] invalid bufferView", before our check of the required extensions ran.
+TEST(LoaderGltf, DracoFileSaysDracoNotInvalidBufferView) {
+  TempDir dir;
+  GltfBuilder g = hierarchy();
+  g.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  g.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  for (auto& a : g.doc["accessors"]) a.erase("bufferView");
+  Scene s;
+  expect_scene_error([&] { load_gltf(s, write_text(dir / "draco.gltf", g.gltf())); },
+                     {"draco.gltf: requires unsupported extension KHR_draco_mesh_compression"});
+  expect_scene_error([&] { load_gltf(s, write_bytes(dir / "draco.glb", g.glb())); },
+                     {"draco.glb: requires unsupported extension KHR_draco_mesh_compression"});
+}
+
+TEST(LoaderGltf, GltfOneIsNamedAsSuch) {
+  TempDir dir;
+  Scene s;
+  expect_scene_error([&] { load_gltf(s, write_text(dir / "v1.gltf", R"({"asset": {"version": "1.0"}})")); },
+                     {"v1.gltf: glTF 1.0 is not supported"});
+  // Many 1.0 exporters wrote no asset at all; 1.0 keeps scenes in an object, not an array.
+  expect_scene_error(
+      [&] { load_gltf(s, write_text(dir / "old.gltf", R"({"scene": "s", "scenes": {"s": {"nodes": []}}})")); },
+      {"old.gltf: a glTF 1.0 file"});
+}
+
+TEST(LoaderGltf, ABufferUriThatIsAFolderIsNamed) {
+  TempDir dir;
+  json doc = json::parse(hierarchy().gltf());
+  doc["buffers"][0]["uri"] = ".";
+  Scene s;
+  expect_scene_error([&] { load_gltf(s, write_text(dir / "dot.gltf", doc.dump())); },
+                     {"dot.gltf: buffers[0].uri '.': not a regular file"});
+  doc["buffers"][0]["uri"] = "missing.bin";
+  expect_scene_error([&] { load_gltf(s, write_text(dir / "gone.gltf", doc.dump())); },
+                     {"gone.gltf: buffers[0].uri 'missing.bin': no such file"});
+}
+
+TEST(LoaderGltf, NoTrianglesSaysWhy) {
+  TempDir dir;
+  GltfBuilder g;
+  const int pts = g.add_positions(kTri);
+  g.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", pts}}}, {"mode", 0}}}}}};
+  g.doc["nodes"] = json::array({{{"mesh", 0}}});
+  g.doc["scenes"] = json::array({{{"nodes", {0}}}});
+  const Scene s = load_gltf_text(dir, "points.gltf", g.gltf());
+  expect_scene_error([&] { require_triangles(s, "points.gltf"); },
+                     {"points.gltf: scene has no triangles; the loader said:", "mode 0 is not a triangle mode"});
 }
 
 TEST(LoaderGltf, MissingFileAndUnsupportedExtensionThrow) {
