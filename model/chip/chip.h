@@ -46,6 +46,7 @@ class Chip : public sc_core::sc_module {
   ~Chip() override;
 
   // Registers every module's VCD traces; call before sc_start.
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window);
 
   // After the simulation: did every TM finish, and the first error if not.

@@ -120,6 +120,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.dram.latency_cycles", &dram.latency_cycles);
   b.bind("memory.dram.interleave_bytes", &dram.interleave_bytes);
   b.bind("memory.dram.burst_bytes", &dram.burst_bytes);
+  b.bind("memory.dram.hash_channels", &dram.hash_channels);
   b.bind("memory.dram.calendar_horizon_cycles", &dram.calendar_horizon_cycles);
   b.bind("memory.dram.access_energy_nj", &dram.access_energy_nj);
   b.bind("memory.interconnect.link_bytes_per_cycle", &interconnect.link_bytes_per_cycle);

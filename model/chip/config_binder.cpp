@@ -125,12 +125,12 @@ void ConfigBinder::apply_override(const std::string& assignment) {
 
 nlohmann::json ConfigBinder::dump() const {
   nlohmann::json doc = nlohmann::json::object();
-  for (const auto& [path, field] : fields_) doc[nlohmann::json::json_pointer("/" + [&] {
-                                              std::string p = path;
-                                              for (char& c : p)
-                                                if (c == '.') c = '/';
-                                              return p;
-                                            }())] = field.write();
+  for (const auto& [path, field] : fields_) {
+    std::string pointer = "/" + path;  // "memory.l2.size_bytes" -> "/memory/l2/size_bytes"
+    for (char& c : pointer)
+      if (c == '.') c = '/';
+    doc[nlohmann::json::json_pointer(pointer)] = field.write();
+  }
   return doc;
 }
 

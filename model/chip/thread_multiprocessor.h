@@ -104,6 +104,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool finished() const { return finished_; }
 
   // VCD: pipeline mode, fused ops and instructions per window, current treelet.
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window);
 
  private:

@@ -104,6 +104,10 @@ struct DramConfig {
   uint32_t bytes_per_cycle = 256;  // total peak: 256 GB/s at 1 GHz, split evenly over channels
   uint32_t latency_cycles = 100;   // from request to first data, unloaded
   uint32_t interleave_bytes = 256;  // consecutive blocks of this size go to consecutive channels
+  // true: the block index is XOR-folded before it picks the channel (Dram::channel_of), as
+  // memory controllers do; false: plain block % channels (treelet-aligned data then camps on
+  // channel 0; kept to measure that).
+  bool hash_channels = true;
   uint32_t burst_bytes = 64;        // one access moves up to this much; energy is per access
   uint32_t calendar_horizon_cycles = 16384;
   double access_energy_nj = 16.3;  // STRaTA table: off-chip DRAM, per access

@@ -42,8 +42,15 @@ class Dram : public sc_core::sc_module {
 
   Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory& backing);
 
+  // Blocks of interleave_bytes go to channels in turn; hashed (the default), the block index is
+  // XOR-folded first, as memory controllers do, so that the 32 KB-aligned treelets' first
+  // blocks do not all land in channel 0 (docs/memory-system.md, "Bank selection").
   uint32_t channel_of(uint64_t addr) const {
-    return static_cast<uint32_t>((addr >> interleave_shift_) % config_.channels);
+    const uint64_t block = addr >> interleave_shift_;
+    if (!config_.hash_channels) return static_cast<uint32_t>(block % config_.channels);
+    uint64_t h = 0;
+    for (uint64_t x = block; x != 0; x >>= channel_bits_) h ^= x & channel_mask_;
+    return static_cast<uint32_t>(h % config_.channels);
   }
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
@@ -52,6 +59,7 @@ class Dram : public sc_core::sc_module {
   SparseMemory& backing() { return backing_; }
   uint64_t overflow_bookings() const;
   // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead).
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:
@@ -61,6 +69,8 @@ class Dram : public sc_core::sc_module {
   SparseMemory& backing_;
   transport::Clock clock_;
   uint32_t interleave_shift_ = 0;
+  uint32_t channel_bits_ = 1;  // bits per fold: enough to name every channel
+  uint64_t channel_mask_ = 1;
   std::vector<transport::ReservationCalendar> buses_;
   std::vector<ChannelCounters> channels_;
   Counters counters_;

@@ -48,6 +48,7 @@ class Interconnect : public sc_core::sc_module {
   const Counters& counters() const { return counters_.counted; }
   const stats::Group& stats() const { return stats_; }
   uint64_t overflow_bookings() const;
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:

@@ -35,6 +35,7 @@ class L1DataCache : public sc_core::sc_module {
   const stats::Group& stats() const { return stats_; }
   const CacheCore& core() const { return path_.core(); }
   // VCD: accesses, misses and bank conflicts per cycle over each window. Before sc_start.
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:

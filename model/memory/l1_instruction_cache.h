@@ -29,6 +29,7 @@ class L1InstructionCache : public sc_core::sc_module {
 
   const Counters& counters() const { return path_.counters(); }
   const stats::Group& stats() const { return stats_; }
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:

@@ -41,6 +41,7 @@ class L2Cache : public sc_core::sc_module {
   const stats::Group& stats() const { return stats_; }
   const CacheCore& core() const { return path_.core(); }
   double energy_per_access_nj() const { return path_.access_energy_nj(); }
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:

@@ -61,6 +61,7 @@ class StreamMemory : public sc_core::sc_module {
   const stats::Group& stats() const { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
   // VCD: rays stored, pushes and pops per cycle, rejected pushes per cycle.
+  using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
  private:

@@ -8,13 +8,17 @@
 #include <cstdio>
 #include <cstring>
 
+#include <set>
+
 namespace strata::memory::test {
 namespace {
 
 TEST(Dram, UnloadedLatencyQueueingAndPerChannelCounts) {
   REQUIRE_FRESH_SYSTEMC();
   SparseMemory backing;
-  Dram dram("dram", DramConfig{}, backing);  // 8 channels x 32 B/cycle, latency 100, 256 B interleave
+  DramConfig plain;
+  plain.hash_channels = false;  // the plain interleave, where the channel of each block is easy to see
+  Dram dram("dram", plain, backing);  // 8 channels x 32 B/cycle, latency 100, 256 B interleave
   RawInitiator l2("l2");
   l2.socket.bind(dram.target);
   std::vector<Sent> r;
@@ -44,6 +48,27 @@ TEST(Dram, UnloadedLatencyQueueingAndPerChannelCounts) {
   v.derive();
   EXPECT_NEAR(v.number("channels[2].energy_nj"), 2 * 16.3, 1e-9);
   EXPECT_EQ(v.count("bytes"), 64u * 4 + 128u);
+}
+
+// The default XOR-folds the block index: the first blocks of 32 KB-aligned treelets spread over
+// every channel (plain: all in channel 0), and 8 consecutive blocks still use all 8 channels.
+TEST(Dram, HashedChannelsSpreadTreeletAlignedBlocks) {
+  REQUIRE_FRESH_SYSTEMC();
+  SparseMemory backing;
+  DramConfig plain;
+  plain.hash_channels = false;
+  Dram hashed("hashed", DramConfig{}, backing), low("low", plain, backing);
+  std::set<uint32_t> treelet_starts;
+  for (uint64_t t = 0; t < 8; ++t) {
+    EXPECT_EQ(low.channel_of(t * 32 * 1024), 0u);
+    treelet_starts.insert(hashed.channel_of(t * 32 * 1024));
+  }
+  EXPECT_EQ(treelet_starts.size(), 8u);
+  for (uint64_t base = 0; base < (64u << 20); base += 8 * 256 * 131) {
+    std::set<uint32_t> run;
+    for (uint64_t b = 0; b < 8; ++b) run.insert(hashed.channel_of(base + b * 256));
+    EXPECT_EQ(run.size(), 8u) << base;
+  }
 }
 
 TEST(Dram, SaturatesAtConfiguredPeakBandwidthWithinOnePercent) {
