@@ -89,6 +89,7 @@ def follow(job_id, pending, root, label="sweep", poll_seconds=2.0):
         except OSError:
             return False
 
+    last = None
     try:
         while True:
             queued = tasks_in_queue(job_id)
@@ -98,7 +99,10 @@ def follow(job_id, pending, root, label="sweep", poll_seconds=2.0):
             if not queued:
                 progress.update(done, failed, final=True, extra=f" (job {job_id} finished)")
                 return
-            progress.update(done, failed, extra=f" ({running} running, {len(queued) - running} waiting in job {job_id})")
+            state = (done, failed, running, len(queued))
+            if state != last or progress.terminal:  # a log file gets a line per change, not per poll
+                progress.update(done, failed, extra=f" ({running} running, {len(queued) - running} waiting in job {job_id})")
+                last = state
             time.sleep(poll_seconds)
     except KeyboardInterrupt:
         subprocess.run(["scancel", job_id])
