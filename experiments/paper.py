@@ -303,6 +303,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count(), help="frames run at once (default: cores)")
     ap.add_argument("--out", default=os.path.join(sweep.ROOT, "out", "experiments"), help="output folder")
     ap.add_argument("--list", action="store_true", help="list the experiments and their frame counts")
+    ap.add_argument("--collect", action="store_true",
+                    help="run nothing: write the tables of the frames that finished (plots only when all did)")
     args = ap.parse_args()
     args.scenes = [s for s in args.scenes.split(",") if s]
     if args.list or not args.experiment:
@@ -320,7 +322,8 @@ def main():
     plans = {n: EXPERIMENTS[n](args) for n in names}
     # Every frame of every experiment in one sweep: shared frames run once, all cores stay busy.
     everything = [p for runs, _ in plans.values() for p in runs]
-    results = sweep.sweep(everything, args.out, args.jobs, label="experiments")
+    results = sweep.collect(everything, args.out) if args.collect else \
+        sweep.sweep(everything, args.out, args.jobs, label="experiments")
     by_key = {sweep.run_key(r.params): r for r in results}
     failed = 0
     for name, (runs, plot) in plans.items():

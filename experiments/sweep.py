@@ -51,6 +51,16 @@ def sweep(runs, root, jobs=None, timeout=6 * 3600, label="sweep"):
     return ordered
 
 
+def collect(runs, root):
+    """The results of `runs` as they stand, running nothing; a frame not finished has an error."""
+    out = []
+    for p in runs:
+        stats, done, error = run_mod.load_result(root, p)
+        out.append(Result(p, run_mod.folder_of(root, p), stats, None if stats is not None else (error or "not run yet"),
+                          (done or {}).get("wall_seconds", 0.0), stats is not None))
+    return out
+
+
 def get(stats, path):
     node = stats
     for part in path.split("."):
