@@ -41,6 +41,36 @@ struct PendingIndex {
   size_t line;
 };
 
+struct Vec {
+  double x, y, z;
+};
+Vec sub(const Vec& a, const Vec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec cross(const Vec& a, const Vec& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double dot(const Vec& a, const Vec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// A polygon of more than 3 vertices that tinyobjloader's fan would triangulate wrongly: not
+// convex in its own plane (Newell's normal; every corner must turn the same way). Collinear
+// corners are allowed; a polygon that is not planar enough to have a normal is left alone.
+bool concave(const std::vector<Vec>& p) {
+  Vec n{0, 0, 0};
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec& a = p[i];
+    const Vec& b = p[(i + 1) % p.size()];
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  const double scale = dot(n, n);
+  if (!(scale > 0)) return false;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec e0 = sub(p[(i + 1) % p.size()], p[i]);
+    const Vec e1 = sub(p[(i + 2) % p.size()], p[(i + 1) % p.size()]);
+    // Relative to the polygon's size, so that rounding on a collinear corner is not a reflex one.
+    if (dot(cross(e0, e1), n) < -1e-9 * scale) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void check_obj_lines(std::istream& in, const std::string& source) {
@@ -51,6 +81,12 @@ void check_obj_lines(std::istream& in, const std::string& source) {
   size_t line_no = 0;
   int64_t vertices = 0;
   std::vector<PendingIndex> forward;  // positive indices beyond the vertices seen so far
+  std::vector<Vec> positions;
+  struct Polygon {
+    std::vector<int64_t> index;  // 0-based
+    size_t line;
+  };
+  std::vector<Polygon> polygons;  // faces of more than 3 vertices, checked once all are read
   while (std::getline(in, text)) {
     ++line_no;
     std::istringstream words(text);
@@ -65,7 +101,10 @@ void check_obj_lines(std::istream& in, const std::string& source) {
           fail(line_no, "vertex " + std::string(i < 3 ? "coordinate" : "value") + " '" + values[i] +
                             "' is not a finite number");
       ++vertices;
+      positions.push_back({std::strtod(values[0].c_str(), nullptr), std::strtod(values[1].c_str(), nullptr),
+                           std::strtod(values[2].c_str(), nullptr)});
     } else if (key == "f" || key == "l" || key == "p") {
+      Polygon poly{{}, line_no};
       for (std::string w; words >> w;) {
         int64_t i = 0;
         if (!vertex_index(w, &i)) fail(line_no, "index '" + w + "' is not a whole number");
@@ -74,13 +113,23 @@ void check_obj_lines(std::istream& in, const std::string& source) {
           fail(line_no, "relative index " + std::to_string(i) + " reaches before the first vertex (" +
                             std::to_string(vertices) + " defined so far)");
         if (i > vertices) forward.push_back({i, line_no});
+        poly.index.push_back(i < 0 ? vertices + i : i - 1);
       }
+      if (key == "f" && poly.index.size() > 3) polygons.push_back(std::move(poly));
     }
   }
   for (const PendingIndex& p : forward)
     if (p.index > vertices)
       fail(p.line, "index " + std::to_string(p.index) + " is beyond the file's " + std::to_string(vertices) +
                        " vertices");
+  for (const Polygon& poly : polygons) {
+    std::vector<Vec> p;
+    for (int64_t i : poly.index) p.push_back(positions[static_cast<size_t>(i)]);
+    if (concave(p))
+      fail(poly.line, "a concave polygon of " + std::to_string(p.size()) +
+                          " vertices: it would be triangulated as a fan, wrongly; split it into convex "
+                          "polygons or triangles");
+  }
   in.clear();
   in.seekg(0, std::ios::beg);
 }

@@ -10,7 +10,9 @@ namespace strata::scenes {
 
 // Reads `in` to the end and rewinds it. Throws SceneError "<source>:<line>: ..." for a vertex
 // position that is not 3 finite numbers (a w or an RGB colour may follow), and for a face,
-// line or point index that is not a non-zero integer naming a vertex the file defines.
+// line or point index that is not a non-zero integer naming a vertex the file defines, and
+// for a concave face of more than 3 vertices (tinyobjloader triangulates faces as fans, which
+// covers the wrong area for a concave one: refused rather than rendered wrong).
 void check_obj_lines(std::istream& in, const std::string& source);
 
 }  // namespace strata::scenes

@@ -218,6 +218,22 @@ TEST(LoaderObj, ScientificNotationColoursAndForwardIndicesStillLoad) {
   EXPECT_EQ(s.triangles.size(), 1u);
 }
 
+// A ring-shaped 8-gon (a square with a notch) is concave: a fan would cover its notch.
+TEST(LoaderObj, AConcavePolygonIsRefusedAndAConvexOneLoads) {
+  TempDir dir;
+  const std::string notch =
+      "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 3 4 0\nv 3 1 0\nv 1 1 0\nv 1 4 0\nv 0 4 0\nf 1 2 3 4 5 6 7 8\n";
+  Scene bad;
+  expect_scene_error([&] { load_obj(bad, write_text(dir / "notch.obj", notch)); },
+                     {"notch.obj:9: parse error: a concave polygon of 8 vertices"});
+  // A convex hexagon, with one collinear corner, in a tilted plane: loads as 4 triangles.
+  const std::string hexagon =
+      "v 0 0 0\nv 2 0 1\nv 4 0 2\nv 5 2 2.5\nv 4 4 2\nv 0 4 0\nf 1 2 3 4 5 6\n";
+  Scene ok;
+  load_obj(ok, write_text(dir / "hexagon.obj", hexagon));
+  EXPECT_EQ(ok.triangles.size() + ok.dropped_degenerate, 4u);
+}
+
 TEST(LoaderObj, OnlyDegenerateTrianglesAreDroppedThenRequireTrianglesFails) {
   TempDir dir;
   const auto file = write_text(dir / "flat.obj",
