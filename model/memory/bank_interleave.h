@@ -11,22 +11,31 @@
 
 namespace strata::memory {
 
+// Also the DRAM's channel of a block, where the count need not be a power of two: then the
+// folded (or plain) index is taken modulo the count.
 class BankInterleave {
  public:
-  BankInterleave(uint32_t banks, bool hashed) : mask_(banks - 1), hashed_(hashed && banks > 1) {
+  BankInterleave(uint32_t banks, bool hashed)
+      : banks_(banks), pow2_((banks & (banks - 1)) == 0), hashed_(hashed && banks > 1) {
     while ((1u << bits_) < banks) ++bits_;
+    mask_ = (uint64_t{1} << bits_) - 1;
   }
   uint32_t bank(uint64_t line) const {
-    if (!hashed_) return static_cast<uint32_t>(line & mask_);
-    uint64_t h = 0;
-    for (uint64_t x = line; x != 0; x >>= bits_) h ^= x;
-    return static_cast<uint32_t>(h & mask_);
+    uint64_t h = line;
+    if (hashed_) {
+      h = 0;
+      for (uint64_t x = line; x != 0; x >>= bits_) h ^= x;
+      h &= mask_;
+    }
+    return static_cast<uint32_t>(pow2_ ? h & mask_ : h % banks_);
   }
 
  private:
-  uint32_t mask_;
-  uint32_t bits_ = 0;
+  uint32_t banks_;
+  bool pow2_;
   bool hashed_;
+  uint32_t bits_ = 0;
+  uint64_t mask_ = 0;
 };
 
 }  // namespace strata::memory

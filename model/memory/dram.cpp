@@ -17,8 +17,8 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
       stats_("dram", "Off-chip DRAM: channels interleaved by address, behind the L2.", stats::Basis::kDataOps) {
   target.register_b_transport(this, &Dram::b_transport);
   while ((1u << interleave_shift_) != config_.interleave_bytes) ++interleave_shift_;
-  while ((1u << channel_bits_) < config_.channels) ++channel_bits_;
-  channel_mask_ = (uint64_t{1} << channel_bits_) - 1;
+  channels_of_ = BankInterleave(config_.channels, config_.hash_channels);
+
   buses_.reserve(config_.channels);
   for (uint32_t c = 0; c < config_.channels; ++c)
     buses_.emplace_back(config_.channel_bytes_per_cycle(), config_.calendar_horizon_cycles);

@@ -5,6 +5,7 @@
 // queues it behind the bytes already booked. Functional data lives in the SparseMemory.
 #pragma once
 
+#include "model/memory/bank_interleave.h"
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
 #include "model/memory/sparse_memory.h"
@@ -46,11 +47,7 @@ class Dram : public sc_core::sc_module {
   // XOR-folded first, as memory controllers do, so that the 32 KB-aligned treelets' first
   // blocks do not all land in channel 0 (docs/memory-system.md, "Bank selection").
   uint32_t channel_of(uint64_t addr) const {
-    const uint64_t block = addr >> interleave_shift_;
-    if (!config_.hash_channels) return static_cast<uint32_t>(block % config_.channels);
-    uint64_t h = 0;
-    for (uint64_t x = block; x != 0; x >>= channel_bits_) h ^= x & channel_mask_;
-    return static_cast<uint32_t>(h % config_.channels);
+    return channels_of_.bank(addr >> interleave_shift_);
   }
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
@@ -69,8 +66,7 @@ class Dram : public sc_core::sc_module {
   SparseMemory& backing_;
   transport::Clock clock_;
   uint32_t interleave_shift_ = 0;
-  uint32_t channel_bits_ = 1;  // bits per fold: enough to name every channel
-  uint64_t channel_mask_ = 1;
+  BankInterleave channels_of_{1, false};  // set from the config in the constructor
   std::vector<transport::ReservationCalendar> buses_;
   std::vector<ChannelCounters> channels_;
   Counters counters_;
