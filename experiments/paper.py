@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """The STRaTA paper's experiments (Kopta et al., HPG 2013), each one command that runs its
-frames (on strata-sweep's runner through experiments/sweep.py: resumable, one folder per frame), writes a CSV with one row per
-frame (its parameters, then every statistic with its unit), and draws the figure as a PNG.
+frames (on strata-sweep's runner through experiments/sweep.py: resumable, one folder per frame),
+writes a CSV with one row per frame (its parameters, then every statistic with its unit), and
+draws the figure as a PNG. Each experiment's frames are a sweep spec in experiments/specs/, so
+`scripts/strata-sweep experiments/specs/<spec>.json` runs the same frames (locally or on Slurm)
+into the same run folders, with the spec's generic plots; this command draws the paper's.
 
     experiments/paper.py EXPERIMENT|all [--res 128x128] [--scenes sibenik,hairball,vegetation]
                          [--jobs N] [--out out/experiments] [--mode lt] [--list]
@@ -28,74 +31,26 @@ import sweep  # noqa: E402
 
 DESIGNS = {"trax": "trax", "streams": "strata-streams", "pipelines": "strata-pipelines"}
 SIZES = [512 << 10, 1 << 20, 2 << 20, 4 << 20, 8 << 20, 16 << 20]
-TMS = [16, 32, 48, 64, 80, 96, 112, 128]
 CLASSES = ["nodes", "triangles", "scene", "path_state", "framebuffer", "thread_data", "instructions", "rays",
            "other"]
+SPECS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "specs")
 
 
-def frame(design, scene, args, **sets):
-    p = {"config": DESIGNS[design], "scene": scene, "res": args.res, "set": {"timing.mode": args.mode}}
-    for k, v in sets.items():
-        p["set"][k.replace("__", ".")] = v
-    return p
-
-
-def sized(design, scene, size, args):
-    """At equal SRAM: TRaX's L2 is `size`; STRaTA keeps its 512 KB L2 and gets a `size` stream memory."""
-    if design == "trax":
-        return frame(design, scene, args, memory__l2__size_bytes=size)
-    return frame(design, scene, args, memory__stream__size_bytes=size)
-
-
-def fig3(args):
-    runs = [frame(d, s, args, tms=t) for s in args.scenes for d in ("trax", "streams") for t in TMS]
-    return runs, plot_fig3
-
-
-def fits(design, size):
-    """Whether the design can run at this L2/stream size. STRaTA keeps 148 B per ray in its
-    stream memory (48 B ray, 4 B link, 96 B path state on chip), so 512 KB holds about 3,500
-    rays, fewer than one per TP of 128 TMs: strata-sim refuses that configuration, and the
-    experiments leave the point out (docs/paper-reproduction.md)."""
-    return design == "trax" or size >= (1 << 20)
-
-
-def fig4(args):
-    runs = [sized(d, s, z, args) for s in args.scenes for d in ("trax", "streams") for z in SIZES if fits(d, z)]
-    return runs, plot_fig4
-
-
-def fig5_7(args):
-    runs, _ = fig4(args)
-    return runs, plot_fig5_7
-
-
-def table2(args):
-    runs = [sized(d, s, 8 << 20, args) for s in args.scenes for d in DESIGNS]
-    return runs, plot_table2
-
-
-def dram_by_class(args):
-    runs = [frame(d, s, args) for s in args.scenes for d in DESIGNS]
-    return runs, plot_dram_by_class
-
-
-def size_check(args):
+def from_spec(name, args):
+    """The frames of experiments/specs/<name>.json, with this command's scenes, resolution and
+    timing mode in place of the spec's: the same parameter sets strata-sweep makes of the spec,
+    so the two share frames. A resolution axis of several values keeps its ratios to the first."""
+    path = os.path.join(SPECS, name + ".json")
+    with open(path) as f:
+        data = json.load(f)
+    axes = data["axes"]
+    if "scene" in axes:  # a spec that fixes its scene (size-check) keeps it
+        axes["scene"] = list(args.scenes)
     w, h = (int(x) for x in args.res.split("x"))
-    big = argparse.Namespace(**vars(args))
-    big.res = f"{2 * w}x{2 * h}"
-    runs = [frame("trax", "sibenik", a, tms=t) for a in (args, big) for t in (32, 64, 128)]
-    return runs, plot_size_check
-
-
-EXPERIMENTS = {
-    "fig3-fps-vs-tms": fig3,
-    "fig4-traffic-vs-size": fig4,
-    "fig5-7-energy": fig5_7,
-    "table2-fetch-rf": table2,
-    "dram-by-class": dram_by_class,
-    "size-check": size_check,
-}
+    w0, h0 = (int(x) for x in axes["res"][0].split("x"))
+    axes["res"] = [f"{int(r.split('x')[0]) * w // w0}x{int(r.split('x')[1]) * h // h0}" for r in axes["res"]]
+    data["timing_mode"] = args.mode
+    return [sweep.with_digest(p) for p in sweep.spec.Spec(path, data).runs()]
 
 
 # ---- Plots ---------------------------------------------------------------------------------
@@ -108,7 +63,8 @@ def pyplot():
 
 
 def design_of(r):
-    return {v: k for k, v in DESIGNS.items()}[r.params["config"]]
+    name = os.path.basename(r.params["config"]).removesuffix(".json")
+    return {v: k for k, v in DESIGNS.items()}[name]
 
 
 def scene_of(r):
@@ -128,14 +84,18 @@ def title(args, what):
     return f"{what} ({args.res}, {args.mode})"
 
 
+def tms_of(r):
+    return r.params["set"]["tms"]
+
+
 def plot_fig3(results, args, png):
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for s in args.scenes:
         for d in ("trax", "streams"):
-            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=lambda r: r.params["set"]["tms"])
+            rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=tms_of)
             if rs:
-                ax.plot([r.params["set"]["tms"] for r in rs], [val(r, "frame.frames_per_second") for r in rs],
+                ax.plot([tms_of(r) for r in rs], [val(r, "frame.frames_per_second") for r in rs],
                         label=f"{s}, {DESIGNS[d]}", **style(d))
     ax.set_xlabel("TMs (32 TPs each)")
     ax.set_ylabel("frames per second [1/s]")
@@ -254,9 +214,9 @@ def plot_size_check(results, args, png):
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
     for res in sorted({r.params["res"] for r in results}):
-        rs = sorted((r for r in results if r.params["res"] == res), key=lambda r: r.params["set"]["tms"])
+        rs = sorted((r for r in results if r.params["res"] == res), key=tms_of)
         base = rs[-1]
-        ax.plot([r.params["set"]["tms"] for r in rs],
+        ax.plot([tms_of(r) for r in rs],
                 [val(r, "frame.frames_per_second") / val(base, "frame.frames_per_second") for r in rs],
                 marker="o", label=f"{res}")
     ax.set_xlabel("TMs")
@@ -268,6 +228,16 @@ def plot_size_check(results, args, png):
     fig.savefig(png, dpi=120)
 
 
+EXPERIMENTS = {  # name: (its spec in experiments/specs, the paper-style figure)
+    "fig3-fps-vs-tms": ("fps-vs-tms", plot_fig3),
+    "fig4-traffic-vs-size": ("equal-sram", plot_fig4),
+    "fig5-7-energy": ("equal-sram", plot_fig5_7),
+    "table2-fetch-rf": ("fetch-rf", plot_table2),
+    "dram-by-class": ("dram-by-class", plot_dram_by_class),
+    "size-check": ("size-check", plot_size_check),
+}
+
+
 # ---- Tables --------------------------------------------------------------------------------
 
 def write_tables(name, results, out):
@@ -276,7 +246,7 @@ def write_tables(name, results, out):
         if r.stats is None:
             continue
         row = {"run": os.path.basename(r.folder), "config": r.params["config"], "scene": r.params["scene"],
-               "res": r.params["res"]}
+               "res": r.params["res"], "mode": r.params.get("mode", "")}
         for k, v in sorted(r.params.get("set", {}).items()):
             row["set " + k] = v
         row["simulator wall [s]"] = round(r.wall, 3)
@@ -308,9 +278,8 @@ def main():
     args = ap.parse_args()
     args.scenes = [s for s in args.scenes.split(",") if s]
     if args.list or not args.experiment:
-        for name, make in EXPERIMENTS.items():
-            runs, _ = make(args)
-            print(f"{name:22} {len(runs):3} frames")
+        for name, (spec, _) in EXPERIMENTS.items():
+            print(f"{name:22} {len(from_spec(spec, args)):3} frames  (experiments/specs/{spec}.json)")
         return 0
     names = list(EXPERIMENTS) if args.experiment == "all" else [args.experiment]
     unknown = [n for n in names if n not in EXPERIMENTS]
@@ -319,7 +288,7 @@ def main():
     if not os.access(sweep.SIM, os.X_OK):
         sys.exit(f"paper.py: {sweep.SIM} not found: build first (scripts/build)")
     os.makedirs(args.out, exist_ok=True)
-    plans = {n: EXPERIMENTS[n](args) for n in names}
+    plans = {n: (from_spec(EXPERIMENTS[n][0], args), EXPERIMENTS[n][1]) for n in names}
     # Every frame of every experiment in one sweep: shared frames run once, all cores stay busy.
     everything = [p for runs, _ in plans.values() for p in runs]
     results = sweep.collect(everything, args.out) if args.collect else \

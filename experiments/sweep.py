@@ -10,11 +10,12 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "sweep"))
-from strata_sweep import local, results as results_mod, run as run_mod  # noqa: E402
+from strata_sweep import local, results as results_mod, run as run_mod, spec  # noqa: E402,F401
 
 # STRATA_SIM: another simulator binary, e.g. a copy that a rebuild during a long sweep leaves alone.
 SIM = run_mod.SIM
 run_key = run_mod.run_key
+with_digest = run_mod.with_digest
 flatten = results_mod.flatten
 
 

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """strata-sweep's Slurm backend against a real single-node Slurm cluster started here from
-Debian's slurm-wlm and munge (strata_sweep/local_slurm.py), with the real strata-sim: four
-Cornell frames as a job array, one of which fails the first time; the re-run submits only that
-one; the results equal the local backend's, bit for bit; the scene cache the tasks built at once
+Debian's slurm-wlm and munge (strata_sweep/local_slurm.py), with the real strata-sim: five
+Cornell frames as a job array: one fails the first time, and one is killed with its task by a
+signal, which Slurm's own record (scontrol or sacct) explains; the re-run submits only those
+two; the results equal the local backend's, bit for bit; the scene cache the tasks built at once
 holds one entry and no temporaries. Run by CTest (Sweep.SlurmCluster), which passes STRATA_SIM."""
 import json
 import os
@@ -19,12 +20,17 @@ from strata_sweep.local_slurm import LocalSlurm  # noqa: E402
 
 SIM = os.environ.get("STRATA_SIM") or os.path.join(os.path.dirname(HERE), "build", "sim", "strata-sim")
 
-# Fails seed 3 until the file "allow-3" exists beside it; otherwise the real simulator.
+# Until the file "allow" exists beside it, seed 3 fails and seed 5 kills its Slurm task (the
+# python3 task process) with SIGKILL, so that nothing can write the run's error.json; otherwise
+# the real simulator.
 WRAPPER = textwrap.dedent("""\
     #!/bin/bash
     here="$(dirname "$0")"
-    if [[ " $* " == *" --seed 3 "* && ! -e "$here/allow-3" ]]; then
+    if [[ " $* " == *" --seed 3 "* && ! -e "$here/allow" ]]; then
       echo "wrapper: seed 3 fails this time" >&2; exit 3
+    fi
+    if [[ " $* " == *" --seed 5 "* && ! -e "$here/allow" ]]; then
+      kill -9 $PPID; sleep 30; exit 9
     fi
     exec {sim} "$@"
 """)
@@ -66,7 +72,7 @@ class SlurmClusterTest(unittest.TestCase):
         path = os.path.join(self.dir, output + ".json")
         with open(path, "w") as f:
             json.dump({"axes": {"design": ["trax"], "scene": ["cornell:size=0.2"], "res": ["16x16"],
-                                "seed": [1, 2, 3, 4]},
+                                "seed": [1, 2, 3, 4, 5]},
                        "fixed": {"set": {"tms": 1, "tps_per_tm": 8}}, "timing_mode": "lt",
                        "output": output, "timeout_seconds": 300}, f)
         return path
@@ -87,14 +93,16 @@ class SlurmClusterTest(unittest.TestCase):
     def test_array_resubmits_only_missing_runs_and_matches_local(self):
         args = ["--backend", "slurm", "--sim", self.wrapper, "--max-running", "2", "--poll-seconds", "0.5"]
         spec = self.spec("on-slurm")
-        self.assertEqual(cli.main([spec, *args]), 1)  # seed 3 failed
+        self.assertEqual(cli.main([spec, *args]), 1)  # seeds 3 and 5 failed
         first = self.results("on-slurm")
-        self.assertEqual(sorted(r["status"] for r in first.values()), ["done", "done", "done", "failed"])
-        failed = [r for r in first.values() if r["status"] == "failed"][0]
-        self.assertIn("exited with 3", failed["error"])
-        open(os.path.join(self.dir, "allow-3"), "w").close()
+        self.assertEqual(sorted(r["status"] for r in first.values()), ["done", "done", "done", "failed", "failed"])
+        errors = sorted(r["error"] for r in first.values() if r["status"] == "failed")
+        self.assertIn("exited with 3", errors[1])
+        self.assertRegex(errors[0], r"^Slurm task \d+_\d \(job \d+, .*\) ended FAILED, killed by signal 9, "
+                                    "without a result$")
+        open(os.path.join(self.dir, "allow"), "w").close()
         self.assertEqual(cli.main([spec, *args]), 0)
-        self.assertEqual(self.batches("on-slurm"), [4, 1])  # the second array held only the missing run
+        self.assertEqual(self.batches("on-slurm"), [5, 2])  # the second array held only the missing runs
         on_slurm = self.results("on-slurm")
         self.assertEqual({r["status"] for r in on_slurm.values()}, {"done"})
         # The scene was built by concurrent tasks into one cache: one entry, no temporaries.

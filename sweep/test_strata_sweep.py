@@ -123,6 +123,24 @@ class SpecTest(Fixture):
         self.assertNotEqual(before, run_mod.run_key(run_mod.with_digest(p)))
 
 
+    def test_a_case_sets_several_parameters_at_once(self):
+        cases = [{"design": "trax", "memory.l2.size_bytes": 1 << 20},
+                 {"design": "strata-streams", "memory.stream.size_bytes": 2 << 20, "seed": 3}]
+        runs = spec_mod.load(self.write_spec(axes={"scene": ["a", "b"], "sram": cases})).runs()
+        self.assertEqual(len(runs), 4)
+        self.assertEqual([(os.path.basename(r["config"]), r["scene"], r["set"], r.get("seed")) for r in runs],
+                         [("trax.json", "a", {"memory.l2.size_bytes": 1 << 20}, None),
+                          ("strata-streams.json", "a", {"memory.stream.size_bytes": 2 << 20}, 3),
+                          ("trax.json", "b", {"memory.l2.size_bytes": 1 << 20}, None),
+                          ("strata-streams.json", "b", {"memory.stream.size_bytes": 2 << 20}, 3)])
+        for bad, expected in (([{}], "axes.sram[0]: a case object"),
+                              ([{"design": "nope"}], "axes.sram.design: 'nope'")):
+            with self.subTest(expected=expected):
+                with self.assertRaises(spec_mod.SpecError) as e:
+                    spec_mod.load(self.write_spec(axes={"scene": ["a"], "sram": bad})).runs()
+                self.assertIn(expected, str(e.exception))
+
+
 class LocalTest(Fixture):
     def test_runs_writes_results_with_units_and_resumes(self):
         spec = self.write_spec(plots=[{"name": "fps", "x": "set memory.l2.size_bytes", "y": "frame.frames_per_second",
@@ -145,6 +163,34 @@ class LocalTest(Fixture):
         self.assertEqual(self.sweep(spec), 0)
         self.assertEqual(len(self.calls()), 4)
         self.assertEqual(len(self.rows()), 4)
+
+    def test_specs_sharing_a_run_folder_run_a_common_frame_once(self):
+        one = self.write_spec("one.json", output="one", runs="store",
+                              axes={"design": ["trax"], "scene": ["a", "b"]})
+        two = self.write_spec("two.json", output="two", runs="store",
+                              axes={"design": ["trax"], "scene": ["b", "c"]},
+                              plots=[{"name": "p", "x": "scene", "y": ["frame.cycles", "memory.dram.bytes"],
+                                      "panels": "config", "log_y": True}])
+        self.assertEqual(self.sweep(one), 0)
+        self.assertEqual(self.sweep(two), 0)
+        self.assertEqual(sorted(c.split("--scene ")[1].split()[0] for c in self.calls()), ["a", "b", "c"])
+        for name, scenes in (("one", ["a", "b"]), ("two", ["b", "c"])):
+            with open(os.path.join(self.dir, name, "results.csv")) as f:
+                rows = list(csv.DictReader(f))
+            self.assertEqual([r["scene"] for r in rows], scenes)
+            self.assertEqual({r["simulator"] for r in rows}, {run_mod.simulator_digest(self.sim)})
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "two", "runs")))
+        self.assertTrue(os.path.getsize(os.path.join(self.dir, "two", "p.png")) > 1000)
+
+    def test_a_plot_takes_its_x_from_the_first_column_a_row_has(self):
+        from strata_sweep import plot
+        rows = [{"status": "done", "set a": 1, "y [s]": 2.0, "config": "x"},
+                {"status": "done", "set b": 4, "y [s]": 3.0, "config": "z"}]
+        self.assertTrue(os.path.getsize(plot.draw({"name": "xy", "x": ["set a", "set b"], "y": "y", "series": ["config"]},
+                                                  rows, self.dir)) > 1000)
+        with self.assertRaises(plot.PlotError) as e:
+            plot.draw({"name": "none", "x": "set a", "y": "missing"}, rows, self.dir)
+        self.assertIn("no column 'missing'", str(e.exception))
 
     def test_the_command_carries_mode_and_sets(self):
         self.assertEqual(self.sweep(self.write_spec(timing_mode="precise")), 0)

@@ -47,9 +47,10 @@ def main(argv=None):
         print(f"strata-sweep: error: {sim or run_mod.SIM}: strata-sim not found (build it with scripts/build)",
               file=sys.stderr)
         return 2
-    root = spec.output
+    root, out = spec.store, spec.output  # the run folders, and the tables and plots
     os.makedirs(root, exist_ok=True)
-    label = os.path.basename(root)
+    os.makedirs(out, exist_ok=True)
+    label = os.path.basename(out)
     unique = list({run_mod.run_key(p): p for p in runs}.values())
     pending = [p for p in unique if not run_mod.is_done(run_mod.folder_of(root, p))]
     print(f"{label}: {len(unique)} runs, {len(unique) - len(pending)} already done, {len(pending)} to run "
@@ -67,16 +68,20 @@ def main(argv=None):
     except KeyboardInterrupt:
         print(f"\n{label}: interrupted; finished runs are kept, the rest run next time", file=sys.stderr)
         rows = results.collect(runs, root)
-        results.write(rows, root)
+        results.write(rows, out)
         return 130
     except slurm.SlurmError as e:
         print(f"strata-sweep: error: {e}", file=sys.stderr)
         return 1
     rows = results.collect(runs, root)
-    csv_path, json_path = results.write(rows, root)
+    csv_path, json_path = results.write(rows, out)
+    simulators = {r["simulator"] for r in rows if r.get("simulator")}
+    if len(simulators) > 1:
+        print(f"{label}: warning: the finished runs come from {len(simulators)} different strata-sim binaries "
+              "(column 'simulator'); compare them only if the model did not change between them", file=sys.stderr)
     for entry in spec.plots:
         try:
-            print(f"{label}: plot {plot.draw(entry, rows, root)}", file=sys.stderr)
+            print(f"{label}: plot {plot.draw(entry, rows, out)}", file=sys.stderr)
         except plot.PlotError as e:
             print(f"strata-sweep: plot not drawn: {e}", file=sys.stderr)
     done = sum(r["status"] == "done" for r in rows)

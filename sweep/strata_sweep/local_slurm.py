@@ -81,6 +81,10 @@ class LocalSlurm:
             "SchedulerType=sched/builtin",
             "JobAcctGatherType=jobacct_gather/none",
             "AccountingStorageType=accounting_storage/none",
+            # No slurmdbd here: the job completion log is what `sacct --completion` reads, so
+            # the sweep can tell why a task ended without a result (killed, timed out, failed).
+            "JobCompType=jobcomp/filetxt",
+            f"JobCompLoc={self.dir}/log/jobcomp.txt",
             "MpiDefault=none",
             "ReturnToService=2",
             "SlurmdTimeout=30",

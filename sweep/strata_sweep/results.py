@@ -50,6 +50,7 @@ def collect(runs, root):
         row["error"] = error or ""
         if stats is not None:
             row["simulator wall [s]"] = done.get("wall_seconds")
+            row["simulator"] = done.get("simulator_sha256", "")
             row.update(flatten(stats))
         rows.append(row)
     return rows

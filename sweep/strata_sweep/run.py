@@ -17,6 +17,26 @@ from .spec import ROOT, resolve_config
 SIM = os.environ.get("STRATA_SIM") or os.path.join(ROOT, "build", "sim", "strata-sim")
 
 
+_sim_digests = {}
+
+
+def simulator_digest(sim=None):
+    """The first 16 hex digits of the strata-sim binary's SHA-256, recorded with each finished
+    run, so a table can tell frames of two builds apart (the run key does not include it: a
+    rebuild that changes nothing would otherwise re-run every frame)."""
+    path = os.path.realpath(sim or SIM)
+    if path not in _sim_digests:
+        h = hashlib.sha256()
+        try:
+            with open(path, "rb") as f:
+                for block in iter(lambda: f.read(1 << 20), b""):
+                    h.update(block)
+            _sim_digests[path] = h.hexdigest()[:16]
+        except OSError:
+            _sim_digests[path] = None
+    return _sim_digests[path]
+
+
 def config_digest(config):
     path = resolve_config(config, ROOT, "config")
     path = path if os.path.isabs(path) else os.path.join(ROOT, path)
@@ -134,7 +154,7 @@ def _execute_locked(params, folder, timeout, sim):
         return None, error
     write_json_atomically(os.path.join(folder, "done.json"),
                           {"wall_seconds": wall, "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
-                           "host": os.uname().nodename})
+                           "host": os.uname().nodename, "simulator_sha256": simulator_digest(sim)})
     return stats, None
 
 

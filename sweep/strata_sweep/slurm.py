@@ -5,8 +5,10 @@ the results are collected the same way and a re-run submits only the runs still 
 
 Runs share the scene cache: strata-sim writes a cache entry to a temporary named by host and
 process and renames it into place, so two tasks building the same scene never corrupt it."""
+import fcntl
 import json
 import os
+import re
 import shlex
 import subprocess
 import sys
@@ -14,6 +16,7 @@ import time
 
 from . import run as run_mod
 from .progress import Progress
+from .task import SLURM_RECORD
 
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -76,6 +79,67 @@ def tasks_in_queue(job_id):
     return states
 
 
+def job_end(job_id):
+    """(state, exit code) of a finished job from Slurm, or None if Slurm no longer knows it.
+    scontrol answers for MinJobAge after the end (no accounting needed); sacct answers later
+    where the cluster keeps accounting (slurmdbd), or a job completion log (--completion)."""
+    p = subprocess.run(["scontrol", "-o", "show", "job", job_id], capture_output=True, text=True)
+    if p.returncode == 0:
+        state, code = re.search(r"JobState=(\S+)", p.stdout), re.search(r"\bExitCode=(\S+)", p.stdout)
+        if state:
+            return state.group(1), code.group(1) if code else "?"
+    for extra in ([], ["--completion"]):
+        p = subprocess.run(["sacct", *extra, "-n", "-P", "-X", "-j", job_id, "--format=JobID,State,ExitCode"],
+                           capture_output=True, text=True)
+        for line in p.stdout.splitlines() if p.returncode == 0 else []:
+            fields = line.split("|")
+            if len(fields) == 3 and fields[0] == job_id:
+                return fields[1].split()[0], fields[2]
+    return None
+
+
+def explain(code):
+    """Slurm's "status:signal" exit code in words."""
+    status, _, signal = code.partition(":")
+    if signal not in ("", "0"):
+        return f"killed by signal {signal}"
+    return f"exit status {status}"
+
+
+def record_lost_tasks(job_id, pending, root):
+    """A task that ended without writing done.json or error.json (killed by a signal, its time
+    or memory limit, a node failure, or cancelled) gets an error.json saying what Slurm says of
+    it, so the summary gives the reason rather than a silent 'missing'. Returns how many."""
+    lost = 0
+    for params in pending:
+        folder = run_mod.folder_of(root, params)
+        if run_mod.is_done(folder) or os.path.exists(os.path.join(folder, "error.json")):
+            continue
+        try:
+            with open(os.path.join(folder, SLURM_RECORD)) as f:
+                record = json.load(f)
+        except (OSError, ValueError):
+            record = None
+        if record is None or record.get("array_job_id") != job_id:
+            why = f"Slurm job {job_id} ended and its task for this run never started (cancelled, or the job failed)"
+        else:
+            end = job_end(record["job_id"]) if record.get("job_id") else None
+            task = f"{record['array_job_id']}_{record['array_task_id']}"
+            why = (f"Slurm task {task} (job {record['job_id']}, {record['host']}) ended {end[0]}, "
+                   f"{explain(end[1])}, without a result" if end else
+                   f"Slurm task {task} ({record['host']}) ended without a result, and Slurm no longer says why")
+        os.makedirs(folder, exist_ok=True)
+        with open(os.path.join(folder, "lock"), "w") as lock:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                continue  # another sweep is running this frame now: its outcome will say
+            if not run_mod.is_done(folder):
+                run_mod.write_json_atomically(os.path.join(folder, "error.json"), {"error": why, "wall_seconds": 0})
+                lost += 1
+    return lost
+
+
 def follow(job_id, pending, root, label="sweep", poll_seconds=2.0):
     """Waits until no task of the job is queued or running, with the progress line over the
     run folders' markers. Ctrl-C cancels the job (scancel) and re-raises."""
@@ -97,7 +161,8 @@ def follow(job_id, pending, root, label="sweep", poll_seconds=2.0):
             failed = sum(failed_now(k) for k in keys)
             running = sum(1 for s in queued.values() if s == "RUNNING")
             if not queued:
-                progress.update(done, failed, final=True, extra=f" (job {job_id} finished)")
+                lost = record_lost_tasks(job_id, pending, root)
+                progress.update(done, failed + lost, final=True, extra=f" (job {job_id} finished)")
                 return
             state = (done, failed, running, len(queued))
             if state != last or progress.terminal:  # a log file gets a line per change, not per poll

@@ -1,5 +1,9 @@
 """The sweep specification: a JSON file naming a base config, axes, how they combine, the timing
-mode and an output folder (README, "Sweeps"). Errors name the file and the field."""
+mode and an output folder (README, "Sweeps"). Errors name the file and the field.
+
+An axis value may be an object: a case that sets several parameters at once (each key as if it
+were its own axis), for runs whose parameters go together, such as the paper's equal-SRAM
+comparison where TRaX varies its L2 and STRaTA its stream memory."""
 import itertools
 import json
 import os
@@ -9,8 +13,8 @@ DESIGNS_DIR = os.path.join(ROOT, "sim", "configs")
 
 # Axes that are strata-sim options; any other axis is a --set path (e.g. "memory.l2.size_bytes").
 OPTION_AXES = ("design", "config", "scene", "res", "spp", "seed", "max_path_vertices")
-TOP_KEYS = {"base_config", "axes", "combine", "timing_mode", "output", "fixed", "timeout_seconds", "plots",
-            "description"}
+TOP_KEYS = {"base_config", "axes", "combine", "timing_mode", "output", "runs", "fixed", "timeout_seconds",
+            "plots", "description"}
 MODES = ("lt", "precise", "sampled")
 
 
@@ -37,6 +41,12 @@ class Spec:
             raise SpecError(where("output: a folder name is required"))
         base = os.path.dirname(os.path.abspath(path))
         self.output = out if os.path.isabs(out) else os.path.normpath(os.path.join(base, out))
+        # Where the run folders live (default: the output folder). Specs that share frames share
+        # this folder, so a frame two experiments need runs once.
+        store = data.get("runs", out)
+        if not isinstance(store, str) or not store:
+            raise SpecError(where("runs: a folder name is expected"))
+        self.store = store if os.path.isabs(store) else os.path.normpath(os.path.join(base, store))
         self.timeout = data.get("timeout_seconds", 6 * 3600)
         if not isinstance(self.timeout, (int, float)) or self.timeout <= 0:
             raise SpecError(where("timeout_seconds: must be a positive number"))
@@ -50,11 +60,15 @@ class Spec:
         for name, values in axes.items():
             if not isinstance(values, list) or not values:
                 raise SpecError(where(f"axes.{name}: must be a non-empty list of values"))
+            for i, v in enumerate(values):
+                if isinstance(v, dict) and (not v or any(not isinstance(k, str) or not k for k in v)):
+                    raise SpecError(where(f"axes.{name}[{i}]: a case object needs one or more parameter names"))
             self.axes.append((name, values))
         if self.combine == "zip" and len({len(v) for _, v in self.axes}) != 1:
             raise SpecError(where("axes: with combine 'zip' every axis needs the same number of values (" +
                                   ", ".join(f"{n}: {len(v)}" for n, v in self.axes) + ")"))
         names = [n for n, _ in self.axes]
+        names += sorted({k for _, vs in self.axes for v in vs if isinstance(v, dict) for k in v})
         if "design" in names and "config" in names:
             raise SpecError(where("axes: give 'design' or 'config', not both"))
         if self.base_config is None and "design" not in names and "config" not in names:
@@ -83,18 +97,23 @@ class Spec:
             if self.base_config:
                 params["config"] = self.base_config
             for name, value in zip(names, combo):
-                if name == "design":
-                    params["config"] = resolve_config(value, self.base_dir, f"{self.path}: axes.design")
-                elif name == "config":
-                    params["config"] = resolve_config(value, self.base_dir, f"{self.path}: axes.config")
-                elif name in OPTION_AXES:
-                    params[name] = value
+                if isinstance(value, dict):  # a case: several parameters at once
+                    for key, v in value.items():
+                        self._apply(params, key, v, f"axes.{name}.{key}")
                 else:
-                    params["set"][name] = value
+                    self._apply(params, name, value, f"axes.{name}")
             if "timing.mode" in params["set"]:
                 raise SpecError(f"{self.path}: set timing.mode through timing_mode, not an axis")
             runs.append(params)
         return runs
+
+    def _apply(self, params, name, value, field):
+        if name in ("design", "config"):
+            params["config"] = resolve_config(value, self.base_dir, f"{self.path}: {field}")
+        elif name in OPTION_AXES:
+            params[name] = value
+        else:
+            params["set"][name] = value
 
 
 def resolve_config(value, base_dir, where):
