@@ -48,6 +48,11 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
   // Sampled timing, warm-up part of a detailed window: book time as usual (refilling queues
   // and caches) but count nothing, so the statistics hold the measured parts only.
   bool uncounted = false;
+  // Sampled timing, functional warming: a fast-forward load or store that only keeps the
+  // caches' tags current (lookup, allocate, evict, dirty bits, down to the L2). It moves no
+  // data, books no time and counts nothing; `functional` is set too, so every module that does
+  // not keep tags passes it by. Detailed windows then start from warm caches.
+  bool warm = false;
   uint32_t treelet = kNoTreelet;
   // What the addressed bytes hold, for the traffic-by-data statistics (data_class.h).
   DataClass data = DataClass::kOther;
@@ -68,7 +73,10 @@ struct MemoryExtension : tlm::tlm_extension<MemoryExtension> {
 };
 
 // Whether a target counts this access in its statistics (plain TLM payloads: always).
-inline bool counts(const MemoryExtension* ext) { return ext == nullptr || !(ext->functional || ext->uncounted); }
+inline bool counts(const MemoryExtension* ext) {
+  return ext == nullptr || !(ext->functional || ext->uncounted || ext->warm);
+}
+inline bool is_warming(const MemoryExtension* ext) { return ext != nullptr && ext->warm; }
 
 // A module's counters come in two copies: those the statistics report, and those of the
 // accesses sampled timing leaves out (warm-up and fast-forward), which are still counted so

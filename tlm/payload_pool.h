@@ -71,6 +71,7 @@ inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr,
   ext.timing_only = timing_only;
   ext.functional = functional;
   ext.uncounted = uncounted;
+  ext.warm = false;
   ext.data = default_data_class(access);
   ext.reset_response();
 }

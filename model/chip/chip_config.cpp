@@ -62,6 +62,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_period_cycles", &timing.sample_period_cycles);
   b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
+  b.bind("timing.functional_warming", &timing.functional_warming);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);

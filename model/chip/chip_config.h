@@ -49,6 +49,9 @@ struct TimingConfig {
   uint32_t sample_period_cycles = 100000;
   uint32_t sample_detail_cycles = 20000;
   uint32_t sample_warmup_cycles = 8000;
+  // Sampled: during fast-forward, replay every load and store as a tag update of the L1 data
+  // cache and the L2 (no time, no counts), so a detailed window starts from warm caches.
+  bool functional_warming = true;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

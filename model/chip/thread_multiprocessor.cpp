@@ -36,6 +36,9 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions) {
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
+  warming_ = sampler_.enabled() && config_.timing.functional_warming;
+  warm_log_.line_shift = 0;
+  while ((1u << warm_log_.line_shift) < config_.l1d.line_bytes) ++warm_log_.line_shift;
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));

@@ -74,6 +74,7 @@ struct TmCounters {
   uint64_t stream_requests = 0, stream_push_full = 0;
   uint64_t global_register_ops = 0;
   uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode
+  uint64_t warm_requests = 0;  // sampled, functional warming: L1 lines replayed as tag updates
   transport::Cycle finished_cycle = 0;
 };
 
@@ -114,6 +115,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool step(Tp& tp);  // false: the TP is done (halted, or failed)
   // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
   bool fast_forward(Tp& tp, transport::Cycle until);
+  // Functional warming: the batch's logged loads and stores as tag updates (warm_log_).
+  void replay_warm_log(const Tp& tp);
   // Whether the current access goes into the statistics (sampled: measured parts only).
   bool counting() const { return sampler_.counting(); }
   transport::Cycle fetch(Tp& tp, uint32_t pc);
@@ -148,6 +151,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 
   TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
+  WarmLog warm_log_;   // the current fast-forward batch's L1 lines (functional warming)
+  bool warming_ = false;
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;

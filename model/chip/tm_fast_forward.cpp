@@ -6,6 +6,7 @@
 
 namespace strata::chip {
 
+using transport::AccessClass;
 using transport::Cycle;
 
 bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
@@ -19,9 +20,15 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   const uint64_t batch = span > cpi ? static_cast<uint64_t>(span / cpi) : 1u;
   current_ = &tp;
   sampler_.begin_batch(tp.ff_clock, until);
+  if (warming_) {
+    warm_log_.clear();
+    tp.memory.set_warm_log(&warm_log_);
+  }
   const iss::RunResult r = tp.hart.run(batch);
+  tp.memory.set_warm_log(nullptr);
   current_ = nullptr;
   sampler_.end_batch();
+  if (warming_) replay_warm_log(tp);
   counters_.instructions += r.executed;
   if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, global_cycle_);
   const uint64_t waits = std::min<uint64_t>(sampler_.batch_waits(), r.executed);
@@ -35,6 +42,27 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
     return false;
   }
   return true;
+}
+
+void ThreadMultiprocessor::replay_warm_log(const Tp& tp) {
+  // The same routing as a timed access (time_data_access): stacks live in the TP's local
+  // memory and on-chip path state in the stream memory, neither in a cache.
+  const uint64_t stacks_end = env_.stacks_base + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+  for (const uint64_t e : warm_log_.entries) {
+    const uint64_t addr = (e >> 1) << warm_log_.line_shift;
+    const bool store = (e & 1u) != 0;
+    if (addr + (uint64_t{1} << warm_log_.line_shift) > env_.stacks_base && addr < stacks_end) continue;
+    if (env_.path_state_on_chip && addr >= env_.path_begin && addr < env_.path_end) continue;
+    transport::PooledPayload gp(pool_);
+    uint32_t scratch = 0;
+    transport::prepare_access(gp, store ? AccessClass::kDataStore : AccessClass::kDataLoad, addr, &scratch, 4,
+                              tp.thread_id, tm_id_, transport::kNoTreelet, true, true, false);
+    gp.ext().warm = true;
+    if (env_.data_classes) gp.ext().data = env_.data_classes->of(static_cast<uint32_t>(addr));
+    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+    data_port->b_transport(*gp, delay);
+    ++counters_.warm_requests;
+  }
 }
 
 iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {

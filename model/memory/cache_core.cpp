@@ -61,6 +61,25 @@ void CacheCore::install(uint32_t set, uint32_t way, uint64_t line, Cycle slot, C
   lru_[i] = ++use_clock_;
 }
 
+bool CacheCore::warm(uint32_t set, uint64_t line, bool store, bool allocate, transport::DataClass data) {
+  const int found = find(set, line);
+  if (found != kMiss) {
+    const uint32_t way = static_cast<uint32_t>(found);
+    touch(set, way);
+    if (store) set_dirty(set, way);
+    return true;
+  }
+  if (!allocate) return false;
+  const uint32_t i = set * ways_ + victim(set);
+  tag_[i] = line + 1;
+  ready_[i] = 0;
+  requested_[i] = 0;
+  dirty_[i] = store ? 1 : 0;
+  data_[i] = data;
+  lru_[i] = ++use_clock_;
+  return false;
+}
+
 uint64_t CacheCore::overflow_bookings() const {
   uint64_t n = 0;
   for (const auto& c : bank_calendars_) n += c.overflow_bookings();

@@ -80,6 +80,11 @@ class CacheCore {
   // time-shifted miss also moves the line's fill earlier, as the precise order would have.
   Lookup classify(uint32_t set, uint64_t line, Cycle slot, Cycle answer);
 
+  // Functional warming (sampled timing): the access's effect on the tags alone. A hit is
+  // touched (and made dirty by a store); a miss, if `allocate`, takes the victim's way, ready
+  // at once. Returns whether the line was present. Books nothing, leaves no shadow entry.
+  bool warm(uint32_t set, uint64_t line, bool store, bool allocate, transport::DataClass data);
+
   // An invalid way if there is one, else the least recently used.
   uint32_t victim(uint32_t set) const;
   void touch(uint32_t set, uint32_t way) { lru_[set * ways_ + way] = ++use_clock_; }

@@ -18,6 +18,19 @@ CachePath::CachePath(const CacheGeometry& geometry, uint32_t hit_latency_cycles,
   tr_conflicts_ = trace_.add_rate("bank_conflicts_per_cycle");
 }
 
+void CachePath::warm_read_allocate(tlm::tlm_generic_payload& gp, const transport::MemoryExtension* ext,
+                                   bool model_misses) {
+  gp.set_response_status(tlm::TLM_OK_RESPONSE);
+  if (!model_misses) return;
+  const uint64_t line = core_.line_of(gp.get_address());
+  const transport::DataClass data = transport::data_class_of(ext);
+  if (gp.is_write()) {  // write-around: the store changes the level below only
+    below_.warm(tlm::TLM_WRITE_COMMAND, gp.get_address(), ext, data);
+  } else if (!core_.warm(core_.set_of(line), line, false, true, data)) {
+    below_.warm(tlm::TLM_READ_COMMAND, core_.line_base(line), ext, data);
+  }
+}
+
 void CachePath::register_stats(stats::Group& g, const char* below, bool stores, bool writebacks,
                                const char* requests_name, const char* bytes_name) {
   const CacheCounters& c = counters_.counted;

@@ -30,4 +30,23 @@ DownstreamResult DownstreamPort::send(tlm::tlm_command cmd, uint64_t addr, uint3
   return DownstreamResult{p->is_response_ok(), clock_.request_cycle_at(stamp, delay), ext.served_by};
 }
 
+void DownstreamPort::warm(tlm::tlm_command cmd, uint64_t addr, const transport::MemoryExtension* origin,
+                          transport::DataClass data) {
+  transport::PooledPayload p(pool_);
+  p->set_command(cmd);
+  p->set_address(addr);
+  p->set_data_ptr(scratch_.data());
+  p->set_data_length(4);
+  p->set_streaming_width(4);
+  transport::MemoryExtension& ext = p.ext();
+  ext.initiator_id = origin != nullptr ? origin->initiator_id : 0;
+  ext.tm_id = origin != nullptr ? origin->tm_id : 0;
+  ext.access = cmd == tlm::TLM_WRITE_COMMAND ? transport::AccessClass::kDataStore : transport::AccessClass::kDataLoad;
+  ext.timing_only = ext.functional = ext.warm = true;
+  ext.uncounted = false;
+  ext.data = data;
+  sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+  socket_->b_transport(*p, delay);
+}
+
 }  // namespace strata::memory

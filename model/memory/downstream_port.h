@@ -31,6 +31,9 @@ class DownstreamPort {
   DownstreamResult send(tlm::tlm_command cmd, uint64_t addr, uint32_t bytes, transport::Cycle at,
                         const transport::MemoryExtension* origin, transport::DataClass data);
 
+  // Functional warming: the same request as a tag update only (no time, no counts).
+  void warm(tlm::tlm_command cmd, uint64_t addr, const transport::MemoryExtension* origin, transport::DataClass data);
+
   uint64_t requests() const { return requests_; }
   uint64_t bytes() const { return bytes_; }
 

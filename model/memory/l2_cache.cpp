@@ -36,6 +36,12 @@ void L2Cache::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { p
 void L2Cache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
+  if (transport::is_warming(ext)) {  // write-back, write-allocate: both allocate; DRAM keeps no tags
+    const uint64_t line = path_.core().line_of(gp.get_address());
+    path_.core().warm(path_.core().set_of(line), line, gp.is_write(), true, transport::data_class_of(ext));
+    gp.set_response_status(tlm::TLM_OK_RESPONSE);
+    return;
+  }
   CachePath::Request r;
   if (!path_.begin(gp, ext, delay, !transport::is_stream_access(access) && gp.get_command() != tlm::TLM_IGNORE_COMMAND, r))
     return;
