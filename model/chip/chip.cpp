@@ -42,8 +42,11 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   interconnect_->stream_side.bind(stream_->target);
   l2_->downstream.bind(dram_->target);
 
+  if (config_.timing.mode == transport::TimingMode::kSampled)
+    schedule_ = std::make_unique<SamplingSchedule>(config_.timing);
   TmEnvironment env;
   env.config = &config_;
+  env.schedule = schedule_.get();
   env.backing = &backing_;
   env.code = &code_;
   env.globals = &globals_;
@@ -69,6 +72,9 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     tms_.back()->stream_port.bind(interconnect_->tm_side);
   }
   register_stats();
+  if (config_.timing.mode == transport::TimingMode::kSampled)
+    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, WindowSampler::Progress{
+        [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; }});
 }
 
 Chip::~Chip() = default;

@@ -16,6 +16,7 @@
 #include "model/chip/global_registers.h"
 #include "model/chip/guest_layout.h"
 #include "model/chip/thread_multiprocessor.h"
+#include "model/chip/window_sampler.h"
 #include "model/iss/code_image.h"
 #include "model/iss/elf_loader.h"
 #include "model/memory/dram.h"
@@ -78,6 +79,9 @@ class Chip : public sc_core::sc_module {
   // The statistics tree of the whole chip (docs/statistics.md): frame, rays, the TMs'
   // instructions and XUs, every memory level, energy and the fidelity sentinels.
   const stats::Group& statistics() const { return stats_; }
+  // Sampled timing: the windows' samples for the confidence intervals (null in other modes).
+  const stats::BatchMeans* window_batches() const { return sampler_ ? &sampler_->batches() : nullptr; }
+  const WindowSampler* window_sampler() const { return sampler_.get(); }
 
  private:
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);
@@ -104,6 +108,8 @@ class Chip : public sc_core::sc_module {
   transport::Cycle report_cycle_ = 0;
   kernels::RayCounters ray_totals_{};
   uint64_t ray_total_ = 0;
+  std::unique_ptr<SamplingSchedule> schedule_;  // sampled timing only
+  std::unique_ptr<WindowSampler> sampler_;     // sampled timing only
 };
 
 }  // namespace strata::chip

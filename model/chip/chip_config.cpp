@@ -63,6 +63,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
   b.bind("timing.functional_warming", &timing.functional_warming);
+  b.bind("timing.sample_target_error", &timing.sample_target_error);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
@@ -151,6 +152,10 @@ void ChipConfig::finalize() {
   require(timing.quantum_cycles >= 1 && timing.quantum_cycles <= 65536,
           "timing.quantum_cycles: must be 1..65536, got " + std::to_string(timing.quantum_cycles));
   require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");
+  require(timing.sample_target_error == 0.0 ||
+              (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
+          "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
+              std::to_string(timing.sample_target_error));
   if (timing.mode == transport::TimingMode::kSampled) {
     const auto& t = timing;
     // In 64 bits: a warm-up near 2^32 must not wrap the sum and pass.

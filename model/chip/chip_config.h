@@ -52,6 +52,9 @@ struct TimingConfig {
   // Sampled: during fast-forward, replay every load and store as a tag update of the L1 data
   // cache and the L2 (no time, no counts), so a detailed window starts from warm caches.
   bool functional_warming = true;
+  // Sampled: 0, or the relative half-width (e.g. 0.02) the frame-cycle estimate's 95% interval
+  // should reach; the sampler then chooses the period itself (window_sampler.h).
+  double sample_target_error = 0.0;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

@@ -1,6 +1,7 @@
 #include "model/chip/chip_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
@@ -88,9 +89,66 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
                     "Host memory the simulated guest memory takes (sparse pages touched).");
 
   values_ = stats::Values::snapshot(chip.statistics());
+  const stats::Values raw = values_;
+  // Sampled timing with an error target: the windows of a sparser stretch count for more.
+  const bool weighted = chip.window_batches() != nullptr && !interrupted_;
+  if (weighted) values_ = chip.window_batches()->weighted_total(raw);
   values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
+  if (weighted) {
+    // The sampling group reports what was timed and measured, not its weighted sums.
+    const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
+      return path.compare(0, 9, "sampling.") == 0;
+    };
+    const stats::Values scaled = values_;
+    values_.combine(scaled, -1, sampling);
+    values_.combine(raw, +1, sampling);
+  }
   values_.append(stats::Values::snapshot(simulation_));
   values_.derive();
+  if (chip.window_batches() != nullptr && !interrupted_) estimate_intervals(raw);
+}
+
+void FrameReport::estimate_intervals(const stats::Values& raw) {
+  const stats::BatchMeans& b = *chip_.window_batches();
+  batches_ = b.batches(raw);
+  windows_ = b.windows();
+  // Frame time as the samples see it: cycles per measured instruction times the instructions
+  // of the frame. A replicate's frame time is the simulated one scaled by its change, so the
+  // rates (frames/s, GB/s) and static energies vary with it as they would.
+  const auto model_cycles = &WindowSampler::model_cycles;
+  const double full_model = model_cycles(b.weighted_total(raw));
+  const double simulated = raw.number("frame.cycles");
+  std::vector<std::string> paths;
+  raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
+  const auto measure = [&](stats::Values r) {
+    if (full_model > 0) r.set("frame.cycles", simulated * model_cycles(r) / full_model);
+    r.scale(extrapolation_factors(r));
+    r.derive();
+    std::vector<double> out;
+    out.reserve(paths.size());
+    r.visit([&](const std::string&, const stats::Values::Stat& s) { out.push_back(s.null ? 0.0 : s.value()); });
+    return out;
+  };
+  const std::vector<double> hw = b.half_widths(raw, measure, kConfidence);
+  if (hw.empty()) {
+    interval_note_ = "no confidence intervals: the frame spanned " + std::to_string(batches_) +
+                     " sampling window(s); at least 2 are needed (lower timing.sample_period_cycles)";
+    return;
+  }
+  for (size_t i = 0; i < paths.size(); ++i)
+    if (hw[i] > 0 && std::isfinite(hw[i])) half_widths_[paths[i]] = hw[i];
+}
+
+std::string FrameReport::pm(const std::string& path) const {
+  const auto it = half_widths_.find(path);
+  const double v = std::fabs(values_.number(path));
+  if (it == half_widths_.end() || v <= 0) return "";
+  return format(" \u00b1 %.1f%%", 100.0 * it->second / v);
+}
+
+std::string FrameReport::pm_points(const std::string& path) const {
+  const auto it = half_widths_.find(path);
+  return it == half_widths_.end() ? "" : format(" \u00b1 %.2f points", 100.0 * it->second);
 }
 
 nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
@@ -102,6 +160,29 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
   j["simulation"]["quantum_cycles"] = cfg.timing.quantum_cycles;
   if (interrupted_) j["interrupted"] = true;
   j["units"] = values_.units();
+  if (chip_.window_batches() != nullptr && !interrupted_) {
+    // Each estimate's interval beside the tree: intervals.stats mirrors its paths.
+    nlohmann::json iv = {{"confidence", kConfidence},
+                         {"method", "delete-one-batch jackknife over consecutive batches of sampling windows, "
+                                    "Student t (docs/sampled-timing.md)"},
+                         {"windows", windows_},
+                         {"batches", batches_}};
+    if (!interval_note_.empty()) iv["note"] = interval_note_;
+    nlohmann::json tree = nlohmann::json::object();
+    for (const auto& [path, hw] : half_widths_) {
+      nlohmann::json* node = &tree;
+      size_t from = 0;
+      for (size_t dot = path.find('.'); dot != std::string::npos; from = dot + 1, dot = path.find('.', from))
+        node = &(*node)[path.substr(from, dot - from)];
+      const double v = std::fabs(values_.number(path));
+      (*node)[path.substr(from)] = {{"half_width", hw}, {"relative", v > 0 ? hw / v : 0.0}};
+      const std::string unit = j["units"].value(path, "");
+      if (!unit.empty()) j["units"]["intervals.stats." + path + ".half_width"] = unit;
+      j["units"]["intervals.stats." + path + ".relative"] = "ratio";
+    }
+    iv["stats"] = std::move(tree);
+    j["intervals"] = std::move(iv);
+  }
   j["config"] = chip::to_json(cfg);
   return j;
 }
@@ -111,6 +192,10 @@ std::string FrameReport::summary() const {
   const ChipConfig& cfg = chip_.config();
   const std::string mode = to_string(cfg.timing.mode);
   const char* m = mode.c_str();
+  const bool sampled = cfg.timing.mode == transport::TimingMode::kSampled;
+  // Estimates carry their interval's level in the tag; what is exact in every mode says so.
+  const std::string ci = sampled && !half_widths_.empty() ? mode + ", " + format("%.0f%%", 100 * kConfidence) + " CI" : mode;
+  const char* exact = sampled ? " [exact]" : "";
   std::string s;
   s += format("design         %s (%u TMs x %u TPs, %.2f GHz); timing mode %s, quantum %u cycles\n",
               cfg.design.name.c_str(), cfg.tms, cfg.tps_per_tm, cfg.clock_ghz, m, cfg.timing.quantum_cycles);
@@ -118,27 +203,31 @@ std::string FrameReport::summary() const {
     s += format("frame          %llu cycles simulated before the interrupt, %llu pixels done [%s]\n",
                 ull(v.count("frame.cycles")), ull(v.count("frame.pixels_done")), m);
   else
-    s += format("frame          %llu cycles = %.3f ms simulated -> %.2f frames/s [%s]\n", ull(v.count("frame.cycles")),
-                v.number("frame.seconds") * 1e3, v.number("frame.frames_per_second"), m);
-  s += format("rays           %llu primary, %llu bounce, %llu shadow (%llu total)\n",
+    s += format("frame          %llu cycles%s = %.3f ms simulated -> %.2f frames/s [%s]\n", ull(v.count("frame.cycles")),
+                pm("frame.cycles").c_str(), v.number("frame.seconds") * 1e3, v.number("frame.frames_per_second"),
+                ci.c_str());
+  s += format("rays           %llu primary, %llu bounce, %llu shadow (%llu total)%s\n",
               ull(v.count("rays.primary.traced")), ull(v.count("rays.bounce.traced")),
-              ull(v.count("rays.shadow.traced")), ull(v.count("rays.total")));
+              ull(v.count("rays.shadow.traced")), ull(v.count("rays.total")), exact);
   const stats::Values& rf = v.group("instructions.register_file");
   const double retired = v.number("instructions.retired");
-  s += format("instructions   %llu retired, %llu register-file accesses\n", ull(v.count("instructions.retired")),
-              ull(rf.count("int_reads") + rf.count("int_writes") + rf.count("fp_reads") + rf.count("fp_writes")));
+  s += format("instructions   %llu retired, %llu register-file accesses%s\n", ull(v.count("instructions.retired")),
+              ull(rf.count("int_reads") + rf.count("int_writes") + rf.count("fp_reads") + rf.count("fp_writes")), exact);
   const stats::Values& l1d = v.group("memory.l1d");
-  s += format("L1 data        %.2f%% hit rate (%llu accesses, %llu bank conflicts) [%s]\n",
-              100.0 * l1d.number("hit_rate"), ull(l1d.count("accesses")), ull(l1d.count("bank_conflicts")), m);
+  s += format("L1 data        %.2f%% hit rate%s (%llu accesses%s, %llu bank conflicts) [%s]\n",
+              100.0 * l1d.number("hit_rate"), pm_points("memory.l1d.hit_rate").c_str(), ull(l1d.count("accesses")),
+              pm("memory.l1d.accesses").c_str(), ull(l1d.count("bank_conflicts")), ci.c_str());
   const stats::Values& l1i = v.group("memory.l1i");
   const double tp_cycles = v.number("frame.cycles") * double(cfg.threads());
   s += format("L1 instruction %.2f%% hit rate (%llu line requests); fetch stalls %.1f%% of TP-cycles [%s]\n",
               100.0 * l1i.number("hit_rate"), ull(l1i.count("accesses")),
               tp_cycles > 0 ? 100.0 * v.number("instructions.stall_cycles.fetch") / tp_cycles : 0.0, m);
-  s += format("L2 / stream    %llu L2 accesses, %llu stream accesses [%s]\n", ull(v.count("memory.l2.accesses")),
-              ull(v.count("memory.stream.accesses")), m);
-  s += format("DRAM           %.3f MB, %.1f GB/s of %.0f GB/s peak [%s]\n", v.number("memory.dram.bytes") * 1e-6,
-              v.number("memory.dram.bandwidth_gb_per_s"), v.number("memory.dram.peak_gb_per_s"), m);
+  s += format("L2 / stream    %llu L2 accesses%s, %llu stream accesses%s [%s]\n", ull(v.count("memory.l2.accesses")),
+              pm("memory.l2.accesses").c_str(), ull(v.count("memory.stream.accesses")),
+              pm("memory.stream.accesses").c_str(), ci.c_str());
+  s += format("DRAM           %.3f MB%s, %.1f GB/s%s of %.0f GB/s peak [%s]\n", v.number("memory.dram.bytes") * 1e-6,
+              pm("memory.dram.bytes").c_str(), v.number("memory.dram.bandwidth_gb_per_s"),
+              pm("memory.dram.bandwidth_gb_per_s").c_str(), v.number("memory.dram.peak_gb_per_s"), ci.c_str());
   const std::pair<const char*, const char*> levels[] = {{"L1 data", "memory.l1d.by_data"},
                                                          {"interconnect", "memory.interconnect.by_data"},
                                                          {"L2", "memory.l2.by_data"},
@@ -153,10 +242,10 @@ std::string FrameReport::summary() const {
     first = false;
   }
   const stats::Values& e = v.group("energy_nj");
-  s += format("energy         %.3f mJ/frame: L1 %.3f, L2+stream %.3f, DRAM %.3f, fetch %.3f, RF %.3f, XU %.3f mJ [%s]\n",
-              e.number("total") * 1e-6, e.number("l1_data") * 1e-6, e.number("l2_and_stream") * 1e-6,
-              e.number("dram") * 1e-6, e.number("instruction_fetch") * 1e-6, e.number("register_file") * 1e-6,
-              e.number("xu") * 1e-6, m);
+  s += format("energy         %.3f mJ/frame%s: L1 %.3f, L2+stream %.3f, DRAM %.3f, fetch %.3f, RF %.3f, XU %.3f mJ [%s]\n",
+              e.number("total") * 1e-6, pm("energy_nj.total").c_str(), e.number("l1_data") * 1e-6,
+              e.number("l2_and_stream") * 1e-6, e.number("dram") * 1e-6, e.number("instruction_fetch") * 1e-6,
+              e.number("register_file") * 1e-6, e.number("xu") * 1e-6, ci.c_str());
   const stats::Values& f = v.group("fidelity");
   const uint64_t overflows = f.count("calendar_overflow_bookings"), late = f.count("xu_late_requests");
   const uint64_t reordered = f.count("reordered_lookups");
@@ -186,6 +275,28 @@ std::string FrameReport::summary() const {
                 retired > 0 ? 100.0 * timed / retired : 0.0, ull(sm.count("detail_cycles")),
                 ull(sm.count("period_cycles")), ull(sm.count("warmup_cycles")),
                 sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
+    if (!interval_note_.empty())
+      s += format("warning        %s\n", interval_note_.c_str());
+    else
+      s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (jackknife); figures without "
+                  "a \u00b1 are exact [sampled]\n",
+                  100 * kConfidence, windows_, batches_);
+    const double target = cfg.timing.sample_target_error;
+    if (target > 0) {
+      const auto it = half_widths_.find("frame.cycles");
+      const double got = it == half_widths_.end() ? -1.0 : it->second / v.number("frame.cycles");
+      if (got >= 0 && got <= target)
+        s += format("target         frame cycles \u00b1 %.1f%% asked, \u00b1 %.2f%% reached; the period ended at %llu "
+                    "cycles after %llu change(s) [sampled]\n",
+                    100 * target, 100 * got, ull(sm.count("last_period_cycles")), ull(sm.count("period_changes")));
+      else
+        s += format("warning        the error target was not met: frame cycles \u00b1 %.1f%% asked, %s reached; the "
+                    "frame ended before enough windows were measured (the period was %llu cycles at the end, the "
+                    "shortest allowed is the detailed window plus a margin): use timing.mode=lt for this frame, or "
+                    "accept the wider interval\n",
+                    100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval",
+                    ull(sm.count("last_period_cycles")));
+    }
   }
   return s;
 }

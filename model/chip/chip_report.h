@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -34,6 +35,13 @@ class FrameReport {
   std::string summary() const;
 
   static std::set<std::string> default_detail() { return {"channel"}; }
+
+  // Sampled timing: the confidence level of the intervals, and each estimated statistic's
+  // half-width by dotted path (empty in the other modes, or when the frame had too few
+  // windows: then `interval_note()` says why).
+  static constexpr double kConfidence = 0.95;
+  const std::map<std::string, double>& half_widths() const { return half_widths_; }
+  const std::string& interval_note() const { return interval_note_; }
   static const std::set<std::string>& detail_axes();  // every axis the tree has
 
  private:
@@ -43,6 +51,14 @@ class FrameReport {
   uint64_t resident_bytes_;
   stats::Group simulation_;
   stats::Values values_;
+  std::map<std::string, double> half_widths_;
+  std::string interval_note_;
+  size_t batches_ = 0, windows_ = 0;
+
+  void estimate_intervals(const stats::Values& raw);
+  // " ± 1.2%" for the statistic at `path` (relative), or "" when it has no interval.
+  std::string pm(const std::string& path) const;
+  std::string pm_points(const std::string& path) const;  // a ratio's: " ± 0.12 points"
 };
 
 // The same JSON, for callers that only need that (tests, tools).

@@ -96,6 +96,16 @@ void Chip::register_stats() {
                   "Loads, stores and pipeline loads in the measured parts.");
     s.count_probe("measured_stream_ops", sum(&TmCounters::stream_requests), Unit::kCount,
                   "Stream-memory operations in the measured parts.");
+    s.count_probe("measured_cycles", [this] { return schedule_->measured_cycles_before(report_cycle_); },
+                  Unit::kCycles, "Cycles of the measured parts (the windows past their warm-up) in the frame.");
+    s.level("target_error", [this] { return config_.timing.sample_target_error; }, Unit::kRatio,
+            "The frame-cycle estimate's 95% relative half-width asked for (0: the period is fixed).");
+    s.level("windows", [this] { return uint64_t{sampler_ ? sampler_->batches().windows() : 0}; }, Unit::kCount,
+            "Detailed windows the frame held before its last (partial) one.");
+    s.level("period_changes", [this] { return uint64_t{schedule_ ? schedule_->changes() : 0}; }, Unit::kCount,
+            "Times the error target changed the sampling period.");
+    s.level("last_period_cycles", [this] { return schedule_ ? schedule_->period_at(report_cycle_) : uint64_t{0}; },
+            Unit::kCycles, "The period at the frame's end (the configured one unless an error target changed it).");
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },
             Unit::kCount, "1: fast-forward loads and stores kept the L1 data and L2 tags current.");
     s.level("warm_requests", sum(&TmCounters::warm_requests), Unit::kCount,

@@ -31,7 +31,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
       xus_(env.config->tm),
-      sampler_(env.config->timing, env.config->global_register_latency_cycles),
+      sampler_(env.config->timing, env.schedule, env.config->global_register_latency_cycles),
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions) {
@@ -131,7 +131,7 @@ void ThreadMultiprocessor::run() {
         // Fast-forward: batches of up to kFastForwardQuanta quanta past the runner-up, never
         // into the next detailed window. Nothing is booked, so running that far ahead only
         // reorders stream operations between TMs, which the kernels are built to tolerate.
-        const Cycle next_window = window + sampler_.period();
+        const Cycle next_window = sampler_.next_window(window);
         const Cycle ahead = kFastForwardQuanta * Cycle{config_.timing.quantum_cycles};
         const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
         if (fast_forward(tp, std::max(ff_until, start + 1))) {

@@ -58,6 +58,8 @@ struct TmEnvironment {
   // On-chip path state: loads and stores to [path_begin, path_end) go to the stream memory.
   bool path_state_on_chip = false;
   uint64_t path_begin = 0, path_end = 0;
+  // Sampled timing: where the detailed windows fall (null in the other modes).
+  const SamplingSchedule* schedule = nullptr;
   // The cycle statistics are taken at (the frame's end): the XUs count each mode's cycles up to it.
   const transport::Cycle* report_cycle = nullptr;
 };

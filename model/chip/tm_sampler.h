@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "model/chip/chip_config.h"
+#include "model/chip/sampling_schedule.h"
 #include "tlm/clock.h"
 
 namespace strata::chip {
@@ -16,18 +17,19 @@ class TmSampler {
  public:
   using Cycle = transport::Cycle;
 
-  TmSampler(const TimingConfig& t, uint32_t global_register_latency)
-      : enabled_(t.mode == transport::TimingMode::kSampled),
-        period_(t.sample_period_cycles),
+  // `schedule`: the chip's windows (null outside sampled timing).
+  TmSampler(const TimingConfig& t, const SamplingSchedule* schedule, uint32_t global_register_latency)
+      : enabled_(t.mode == transport::TimingMode::kSampled && schedule != nullptr),
+        schedule_(schedule),
         detail_(t.sample_detail_cycles),
         warmup_(t.sample_warmup_cycles),
         default_wait_(global_register_latency) {}
 
   bool enabled() const { return enabled_; }
-  Cycle period() const { return period_; }
-  Cycle window_of(Cycle t) const { return t - t % period_; }  // first cycle of t's period
-  bool detailed(Cycle t) const { return t - window_of(t) < detail_; }
-  Cycle window_end(Cycle window) const { return window + detail_ - 1; }  // its last detailed cycle
+  Cycle window_of(Cycle t) const { return schedule_->window_of(t); }  // first cycle of t's period
+  Cycle next_window(Cycle window) const { return schedule_->next_window(window); }
+  bool detailed(Cycle t) const { return schedule_->detailed(t); }
+  Cycle window_end(Cycle window) const { return schedule_->window_end(window); }  // its last detailed cycle
 
   // Whether the instruction a TP issues at t (in `window`) is measured: past the warm-up of
   // the newest window. A TP lagging in an older window does not count; the first TP in a
@@ -99,7 +101,8 @@ class TmSampler {
 
  private:
   bool enabled_;
-  Cycle period_, detail_, warmup_;
+  const SamplingSchedule* schedule_;
+  Cycle detail_, warmup_;
   uint32_t default_wait_;
   Cycle measure_window_ = 0;  // the detailed window being measured (its first cycle)
   uint64_t measured_ = 0;               // instructions issued in its measured part

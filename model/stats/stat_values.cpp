@@ -1,5 +1,6 @@
 #include "model/stats/stat_values.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -95,6 +96,47 @@ void Values::scale(const Factors& f) {
   }
   for (Values& c : children_) c.scale(f);
   for (Values& e : each_) e.scale(f);
+}
+
+void Values::combine(const Values& other, double weight,
+                     const std::function<bool(const std::string&, const Stat&)>& which) {
+  combine_at("", other, weight, which);
+}
+
+void Values::combine_at(const std::string& prefix, const Values& o, double weight,
+                        const std::function<bool(const std::string&, const Stat&)>& which) {
+  if (o.stats_.size() != stats_.size() || o.children_.size() != children_.size() || o.each_.size() != each_.size())
+    throw std::logic_error("statistics: snapshots of '" + name_ + "' differ in shape");
+  for (size_t i = 0; i < stats_.size(); ++i) {
+    Stat& s = stats_[i];
+    if (s.def->kind != Kind::kCount || !which(prefix + s.def->name, s)) continue;
+    const Stat& t = o.stats_[i];
+    if (weight == 1.0) {  // exact in integers: the common case, and what fixed periods need
+      s.u += t.u;
+    } else if (weight == -1.0) {
+      s.u = s.u > t.u ? s.u - t.u : 0;
+    } else {
+      const double u = double(s.u) + weight * double(t.u);
+      s.u = u > 0 ? static_cast<uint64_t>(std::llround(u)) : 0;
+    }
+    s.d = std::max(0.0, s.d + weight * t.d);
+  }
+  for (size_t c = 0; c < children_.size(); ++c)
+    children_[c].combine_at(prefix + children_[c].name_ + ".", o.children_[c], weight, which);
+  for (size_t e = 0; e < each_.size(); ++e) each_[e].combine_at(prefix, o.each_[e], weight, which);
+}
+
+void Values::visit(const std::function<void(const std::string&, const Stat&)>& f) const { visit_at("", f); }
+
+void Values::visit_at(const std::string& prefix, const std::function<void(const std::string&, const Stat&)>& f) const {
+  for (const Stat& s : stats_) f(prefix + s.def->name, s);
+  for (const Values& c : children_) c.visit_at(prefix + c.name_ + ".", f);
+}
+
+void Values::set(const std::string& path, double value) {
+  Stat& s = const_cast<Stat&>(stat(path));
+  if (s.integer) s.u = value > 0 ? static_cast<uint64_t>(std::llround(value)) : 0;
+  else s.d = value;
 }
 
 void Values::derive() {

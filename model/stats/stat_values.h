@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,6 +37,14 @@ class Values {
   // Ratios, then formulas, in registration order (a formula may read what precedes it).
   void derive();
 
+  // Sampled timing's intervals (batch_means.h): adds `weight` times `other`'s value of every
+  // count whose dotted path `which` accepts, instances included (integer counts rounded). Both
+  // trees must come from one statistics tree. A result below zero clamps at zero.
+  void combine(const Values& other, double weight,
+               const std::function<bool(const std::string&, const Stat&)>& which);
+  // Every statistic in tree order with its dotted path (instance arrays: merged values only).
+  void visit(const std::function<void(const std::string&, const Stat&)>& f) const;
+
   // axes: the instance axes to list one by one ("tm", "l2-bank", "channel", ...).
   nlohmann::json to_json(const std::set<std::string>& axes) const;
   // {"dotted.path": "unit"} for every statistic to_json writes without axes.
@@ -54,6 +63,8 @@ class Values {
   bool has(const std::string& path) const;
   const Values& group(const std::string& path) const;
   const Stat& stat(const std::string& path) const;
+  // Overwrites one statistic's value (sampled timing's replicates re-estimate the frame time).
+  void set(const std::string& path, double value);
 
   const std::string& name() const { return name_; }
   const std::vector<Stat>& stats() const { return stats_; }
@@ -70,6 +81,9 @@ class Values {
   const Stat* find_stat(const std::string& path) const;
   void collect_units(const std::string& prefix, nlohmann::json& out) const;
   void collect_rows(const std::string& prefix, std::vector<Row>& out) const;
+  void combine_at(const std::string& prefix, const Values& other, double weight,
+                  const std::function<bool(const std::string&, const Stat&)>& which);
+  void visit_at(const std::string& prefix, const std::function<void(const std::string&, const Stat&)>& f) const;
 
   std::string name_;
   const Group* group_ = nullptr;

@@ -94,10 +94,42 @@ TEST_P(SampledTiming, FunctionalWarmingRemovesTheStaleCacheBias) {
     const double reference = lt["memory"][level][what].get<double>();
     return std::abs(s["memory"][level][what].get<double>() / reference - 1.0);
   };
+  // The bias is about +70% cold; what is left warm is the sampling noise of a few hundred
+  // misses (the frame's DRAM interval is about +-70% at this size), so compare, with margin.
   EXPECT_GT(error(cold, "dram", "bytes"), 0.3) << "the stale-cache bias this test is about is gone";
-  EXPECT_LT(error(warm, "dram", "bytes"), 0.1);
-  EXPECT_LT(error(warm, "l2", "misses"), 0.1);
+  EXPECT_LT(error(warm, "dram", "bytes"), error(cold, "dram", "bytes") / 3);
+  EXPECT_LT(error(warm, "l2", "misses"), error(cold, "l2", "misses") / 3);
   EXPECT_LT(error(warm, "l2", "accesses"), error(cold, "l2", "accesses"));
+}
+
+// Every estimate carries a 95% interval; exact figures carry none; an error target makes the
+// sampler time more of the frame when it is tighter, and says whether it was met.
+TEST_P(SampledTiming, EstimatesCarryIntervalsAndATighterTargetTimesMore) {
+  TempDir dir;
+  const std::string sparse = " --set timing.sample_period_cycles=24000";
+  const nlohmann::json loose =
+      run_frame(dir, GetParam(), "sampled", "-loose", sparse + " --set timing.sample_target_error=0.5");
+  const nlohmann::json tight =
+      run_frame(dir, GetParam(), "sampled", "-tight", sparse + " --set timing.sample_target_error=0.01");
+  ASSERT_FALSE(loose.is_null() || tight.is_null());
+  for (const nlohmann::json* j : {&loose, &tight}) {
+    const auto& iv = (*j)["intervals"];
+    EXPECT_EQ(iv["confidence"], 0.95);
+    EXPECT_GE(iv["batches"].get<int>(), 2);
+    for (const char* path : {"/frame/cycles", "/memory/l2/accesses", "/memory/dram/bytes", "/energy_nj/total"}) {
+      const auto ptr = nlohmann::json::json_pointer("/stats" + std::string(path) + "/half_width");
+      ASSERT_TRUE(iv.contains(ptr)) << path;
+      const double hw = iv[ptr].get<double>();
+      EXPECT_TRUE(std::isfinite(hw) && hw > 0) << path << " " << hw;
+    }
+    EXPECT_FALSE(iv["stats"].contains("rays")) << "rays are exact";
+    EXPECT_FALSE(iv["stats"].contains(nlohmann::json::json_pointer("/instructions/retired"))) << "exact";
+  }
+  EXPECT_EQ(loose["rays"], tight["rays"]);
+  EXPECT_GT(tight["sampling"]["timed_instructions"].get<double>(), 1.2 * loose["sampling"]["timed_instructions"].get<double>());
+  EXPECT_GT(tight["sampling"]["period_changes"].get<int>(), 0);
+  EXPECT_LT(tight["sampling"]["last_period_cycles"].get<double>(), 24000.0);  // never sparser than asked
+  EXPECT_LE(loose["sampling"]["last_period_cycles"].get<double>(), 24000.0);
 }
 
 std::string design_name(const ::testing::TestParamInfo<const char*>& p) {

@@ -1,0 +1,115 @@
+#include "model/chip/window_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/stats/student_t.h"
+
+namespace strata::chip {
+
+WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
+                             const stats::Group& root, Progress progress)
+    : sc_core::sc_module(name),
+      config_(config),
+      schedule_(schedule),
+      root_(root),
+      progress_(std::move(progress)),
+      batches_(&WindowSampler::measured) {
+  SC_THREAD(run);
+}
+
+bool WindowSampler::measured(const std::string& path, const stats::Values::Stat& s) {
+  return s.basis != stats::Basis::kExact || path.compare(0, 9, "sampling.") == 0;
+}
+
+double WindowSampler::model_cycles(const stats::Values& v) {
+  const double measured = v.number("sampling.measured_instructions");
+  return measured > 0 ? v.number("instructions.retired") * v.number("sampling.measured_cycles") / measured : 0.0;
+}
+
+uint64_t WindowSampler::min_period() const {
+  // When the sampler wakes, halfway through the fast-forward, a TM may be ahead of global time
+  // by its quantum and a fast-forward batch (4 quanta) and a TP slack. It must not have begun
+  // the next window's measured part: half the fast-forward plus the next warm-up must exceed
+  // that lead. Two quanta at least, so that a fast-forward happens at all.
+  const auto& t = config_.timing;
+  const uint64_t ahead = 5ull * t.quantum_cycles + 2ull * t.tp_slack_cycles;
+  const uint64_t gap = ahead > t.sample_warmup_cycles ? 2 * (ahead - t.sample_warmup_cycles) : 0;
+  return t.sample_detail_cycles + std::max<uint64_t>(gap, 2ull * t.quantum_cycles);
+}
+
+// Never sparser than configured: a target met early must not leave the rest of the frame unsampled.
+uint64_t WindowSampler::max_period() const { return config_.timing.sample_period_cycles; }
+
+void WindowSampler::run() {
+  const sc_core::sc_time cycle(1.0 / config_.clock_ghz, sc_core::SC_NS);
+  for (uint64_t window = 0;; window = schedule_.next_window(window)) {
+    // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
+    // there, far less than the distance to either measured part.
+    const uint64_t period = schedule_.period_at(window);
+    const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
+    const uint64_t now = static_cast<uint64_t>(sc_core::sc_time_stamp() / cycle + 0.5);
+    if (at > now) sc_core::wait(cycle * double(at - now));
+    if (progress_.done()) return;  // the frame ended in this period: the report takes its tail
+    stats::Values cumulative = stats::Values::snapshot(root_);
+    // A window stands for its period of the frame: weighted against the first period.
+    const double weight = double(period) / double(config_.timing.sample_period_cycles);
+    batches_.add_window(cumulative, weight);
+    const double cycles = cumulative.number("sampling.measured_cycles");
+    const double instructions = cumulative.number("sampling.measured_instructions");
+    windows_.emplace_back(weight * (cycles - last_cycles_), weight * (instructions - last_instructions_));
+    last_cycles_ = cycles;
+    last_instructions_ = instructions;
+    if (config_.timing.sample_target_error > 0) retarget(at);
+  }
+}
+
+double WindowSampler::relative_half_width() const {
+  // The same delete-one-batch jackknife as BatchMeans, on the ratio cycles / instruction, with
+  // the windows in at most 32 consecutive batches.
+  const size_t n = windows_.size(), per = (n + 31) / 32, b = (n + per - 1) / per;
+  if (b < 2) return 0.0;
+  std::vector<std::pair<double, double>> sums(b, {0.0, 0.0});
+  double c = 0, m = 0;
+  for (size_t i = 0; i < n; ++i) {
+    sums[i / per].first += windows_[i].first;
+    sums[i / per].second += windows_[i].second;
+    c += windows_[i].first;
+    m += windows_[i].second;
+  }
+  if (!(m > 0)) return 0.0;
+  std::vector<double> replicates;
+  double mean = 0;
+  for (const auto& [bc, bm] : sums) {
+    replicates.push_back(m > bm ? (c - bc) / (m - bm) : c / m);
+    mean += replicates.back();
+  }
+  mean /= double(b);
+  double ss = 0;
+  for (double r : replicates) ss += (r - mean) * (r - mean);
+  const double t = stats::student_t_quantile(0.5 + 0.5 * kConfidence, static_cast<unsigned>(b - 1));
+  return t * std::sqrt(ss * double(b - 1) / double(b)) / (c / m);
+}
+
+void WindowSampler::retarget(uint64_t now) {
+  if (windows_.size() < kPilotWindows) return;
+  const double fraction = progress_.fraction();
+  if (!(fraction > 0.02)) return;  // too early to tell how long the frame is
+  const double relative = relative_half_width();
+  if (!(relative > 0)) return;
+  // The half-width shrinks as 1 / sqrt(windows): the frame needs n (hw / target)^2 of them.
+  const double target = config_.timing.sample_target_error;
+  const double needed = double(windows_.size()) * (relative / target) * (relative / target);
+  const double frame = double(now) / std::min(1.0, fraction);
+  const double remaining_cycles = std::max(0.0, frame - double(now));
+  const double remaining_windows = std::max(1.0, needed - double(windows_.size()));
+  const double chosen = remaining_cycles / remaining_windows;
+  const uint64_t period =
+      std::clamp<uint64_t>(static_cast<uint64_t>(chosen), min_period(), std::max(min_period(), max_period()));
+  // From the next window on: no TM has reached it yet.
+  const uint64_t current = schedule_.window_of(now);
+  schedule_.change_period(schedule_.next_window(current), period);
+  batches_.set_tail_weight(double(period) / double(config_.timing.sample_period_cycles));
+}
+
+}  // namespace strata::chip

@@ -1,0 +1,66 @@
+// Sampled timing's samples (docs/sampled-timing.md, "Confidence intervals" and "An error
+// target"). Once per sampling period, halfway through the fast-forward (when every TM has
+// finished the period's measured part, and none has begun the next), the chip's raw statistics
+// tree is handed to a BatchMeans, whose batches of windows give every estimate its interval.
+//
+// With an error target (timing.sample_target_error), the sampler also chooses the period: after
+// a pilot of kPilotWindows windows at the configured period, at every window it estimates the
+// frame-cycle interval from the windows so far, how many windows the whole frame needs for the
+// target (the half-width shrinks as 1 / sqrt(windows)), and how long the frame will be (from
+// the share of pixels done), and sets the period of the windows to come accordingly.
+#pragma once
+
+#include <functional>
+#include <systemc>
+
+#include "model/chip/chip_config.h"
+#include "model/chip/sampling_schedule.h"
+#include "model/stats/batch_means.h"
+#include "model/stats/stat_group.h"
+
+namespace strata::chip {
+
+class WindowSampler : public sc_core::sc_module {
+ public:
+  static constexpr size_t kPilotWindows = 4;
+  static constexpr double kConfidence = 0.95;
+
+  struct Progress {
+    std::function<bool()> done;        // the frame has finished
+    std::function<double()> fraction;  // share of the frame's pixels finished, 0..1
+  };
+  SC_HAS_PROCESS(WindowSampler);
+  WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
+                const stats::Group& root, Progress progress);
+  const stats::BatchMeans& batches() const { return batches_; }
+
+  // The counts a window contributes to: every extrapolated count, and the sampling group's
+  // measured denominators. Exact totals (instructions, rays) stay whole in every replicate.
+  static bool measured(const std::string& path, const stats::Values::Stat& s);
+  // The frame time the samples imply: instructions retired x measured cycles / measured
+  // instructions (the report scales its replicates' frame time by this).
+  static double model_cycles(const stats::Values& v);
+
+  // The shortest period the schedule may take: the detailed window, and on each side of the
+  // sampler's wake-up a margin no TM runs ahead of global time by.
+  uint64_t min_period() const;
+  uint64_t max_period() const;
+
+ private:
+  void run();
+  void retarget(uint64_t now);
+  // The frame-cycle interval's relative half-width from the windows so far (the report's
+  // estimator, on the two counts it needs: cheap enough to run at every window).
+  double relative_half_width() const;
+
+  const ChipConfig& config_;
+  SamplingSchedule& schedule_;
+  const stats::Group& root_;
+  Progress progress_;
+  stats::BatchMeans batches_;
+  // Per window: its measured cycles and measured instructions (for the error target).
+  std::vector<std::pair<double, double>> windows_;
+  double last_cycles_ = 0, last_instructions_ = 0;
+};
+
+}  // namespace strata::chip

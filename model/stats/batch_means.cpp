@@ -1,0 +1,101 @@
+#include "model/stats/batch_means.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "model/stats/student_t.h"
+
+namespace strata::stats {
+
+BatchMeans::BatchMeans(Selector measured, size_t max_batches)
+    : measured_(std::move(measured)), max_batches_(max_batches < 2 ? 2 : max_batches) {}
+
+void BatchMeans::add_window(const Values& cumulative, double weight) {
+  Values window = cumulative;
+  if (have_last_) window.combine(last_, -1, measured_);
+  if (weight != 1.0) {
+    const Values plain = window;
+    window.combine(plain, weight - 1.0, measured_);
+  }
+  last_ = cumulative;
+  have_last_ = true;
+  ++windows_;
+  if (in_current_ == 0) current_ = std::move(window);
+  else current_.combine(window, +1, measured_);
+  if (++in_current_ < per_batch_) return;
+  full_.push_back(std::move(current_));
+  in_current_ = 0;
+  if (full_.size() < max_batches_) return;
+  // Full: merge neighbours, so every batch holds twice the windows (an odd last one waits).
+  std::vector<Values> merged;
+  for (size_t i = 0; i + 1 < full_.size(); i += 2) {
+    merged.push_back(std::move(full_[i]));
+    merged.back().combine(full_[i + 1], +1, measured_);
+  }
+  if (full_.size() % 2 == 1) {
+    current_ = std::move(full_.back());
+    in_current_ = per_batch_;
+  }
+  full_ = std::move(merged);
+  per_batch_ *= 2;
+}
+
+std::vector<Values> BatchMeans::all_batches(const Values& total) const {
+  std::vector<Values> batches = full_;
+  if (in_current_ > 0) batches.push_back(current_);
+  // What came after the last window's end: the frame's tail (its last, partial window).
+  Values tail = total;
+  if (have_last_) tail.combine(last_, -1, measured_);
+  if (tail_weight_ != 1.0) {
+    const Values plain = tail;
+    tail.combine(plain, tail_weight_ - 1.0, measured_);
+  }
+  bool any = false;
+  tail.visit([&](const std::string& path, const Values::Stat& s) {
+    if (s.def->kind == Kind::kCount && measured_(path, s) && s.value() != 0) any = true;
+  });
+  if (any) batches.push_back(std::move(tail));
+  return batches;
+}
+
+size_t BatchMeans::batches(const Values& total) const { return all_batches(total).size(); }
+
+Values BatchMeans::weighted_total(const Values& total) const {
+  Values est = total;
+  const Values copy = total;
+  est.combine(copy, -1, measured_);  // every measured count to 0, the exact totals kept
+  for (const Values& b : all_batches(total)) est.combine(b, +1, measured_);
+  return est;
+}
+
+std::vector<double> BatchMeans::half_widths(const Values& total,
+                                            const std::function<std::vector<double>(Values)>& measure,
+                                            double confidence) const {
+  const std::vector<Values> batches = all_batches(total);
+  const size_t n = batches.size();
+  if (n < 2) return {};
+  const Values est = weighted_total(total);
+  std::vector<std::vector<double>> replicates;
+  replicates.reserve(n);
+  for (const Values& b : batches) {
+    Values r = est;
+    r.combine(b, -1, measured_);
+    replicates.push_back(measure(std::move(r)));
+    if (replicates.back().size() != replicates.front().size())
+      throw std::logic_error("BatchMeans: measure() returned a different number of figures for a replicate");
+  }
+  const double t = student_t_quantile(0.5 + 0.5 * confidence, static_cast<unsigned>(n - 1));
+  std::vector<double> out(replicates.front().size(), 0.0);
+  for (size_t k = 0; k < out.size(); ++k) {
+    double mean = 0.0;
+    for (const auto& r : replicates) mean += r[k];
+    mean /= double(n);
+    double ss = 0.0;
+    for (const auto& r : replicates) ss += (r[k] - mean) * (r[k] - mean);
+    // The jackknife variance: (n - 1) / n times the replicates' sum of squares.
+    out[k] = t * std::sqrt(ss * double(n - 1) / double(n));
+  }
+  return out;
+}
+
+}  // namespace strata::stats

@@ -1,0 +1,176 @@
+// Sampled timing's confidence intervals (model/stats/batch_means.h, student_t.h) on a small
+// statistics tree whose windows the test writes by hand, so every interval can be computed
+// here independently.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "model/stats/batch_means.h"
+#include "model/stats/student_t.h"
+
+namespace strata::stats {
+namespace {
+
+TEST(StudentT, QuantilesMatchTheTables) {
+  EXPECT_NEAR(normal_quantile(0.975), 1.959964, 1e-6);
+  EXPECT_NEAR(normal_quantile(0.5), 0.0, 1e-9);
+  // Two-sided 95%: t(0.975, dof), from the standard tables.
+  const std::pair<unsigned, double> table[] = {{1, 12.7062}, {2, 4.3027}, {3, 3.1824}, {4, 2.7764},
+                                               {9, 2.2622}, {30, 2.0423}, {120, 1.9799}};
+  for (const auto& [dof, t] : table) EXPECT_NEAR(student_t_quantile(0.975, dof), t, 1e-4) << dof;
+  EXPECT_NEAR(student_t_quantile(0.995, 10), 3.1693, 1e-4);
+  EXPECT_NEAR(student_t_quantile(0.025, 5), -2.5706, 1e-4);
+  EXPECT_THROW(student_t_quantile(0.975, 0), std::domain_error);
+  EXPECT_THROW(normal_quantile(1.0), std::domain_error);
+}
+
+// A frame in miniature: `retired` and `rays` are exact totals; `misses` is extrapolated by
+// the measured-instructions basis; `hit_rate` is a ratio and `per_ray` a formula.
+struct Tree {
+  uint64_t retired = 0, rays = 0, measured = 0, misses = 0, hits = 0;
+  Group root{"chip", "test"};
+  Group sampling{"sampling", "measured denominators", Basis::kExact};
+  Group memory{"memory", "extrapolated", Basis::kMeasuredInstructions};
+  Tree() {
+    root.count("retired", &retired, Unit::kCount, "exact", Basis::kExact);
+    root.count("rays", &rays, Unit::kCount, "exact", Basis::kExact);
+    sampling.count("measured_instructions", &measured, Unit::kCount, "measured");
+    memory.count("misses", &misses, Unit::kCount, "m");
+    memory.count("hits", &hits, Unit::kCount, "h");
+    memory.ratio("hit_rate", "hits", {"hits", "misses"}, "r");
+    memory.derived("misses_per_ray", Unit::kRatio, "f",
+                   [](const Scope& s) { return s.self().number("misses") / s.root().number("rays"); });
+    root.child(&sampling);
+    root.child(&memory);
+  }
+};
+
+bool measured(const std::string& path, const Values::Stat& s) {
+  return s.basis != Basis::kExact || path.compare(0, 9, "sampling.") == 0;
+}
+
+// What the report does with a tree: extrapolate `misses` and `hits` by retired / measured.
+void finish(Values& v) {
+  Factors f;
+  f[Basis::kMeasuredInstructions] = v.number("retired") / v.number("sampling.measured_instructions");
+  v.scale(f);
+  v.derive();
+}
+
+TEST(BatchMeans, JackknifeOverWindowsMatchesAHandComputation) {
+  Tree t;
+  BatchMeans b(&measured, 32);
+  const uint64_t m[] = {100, 120, 80, 100, 110};
+  const uint64_t x[] = {10, 15, 6, 9, 12};
+  for (int i = 0; i < 5; ++i) {
+    t.retired += 1000;
+    t.rays += 7;
+    t.measured += m[i];
+    t.misses += x[i];
+    t.hits += 3 * x[i];
+    b.add_window(Values::snapshot(t.root));
+  }
+  const Values total = Values::snapshot(t.root);
+  EXPECT_EQ(b.windows(), 5u);
+  EXPECT_EQ(b.batches(total), 5u);  // nothing after the last window: no tail
+  const auto hw = b.half_widths(total,
+                                [](Values r) {
+                                  finish(r);
+                                  return std::vector<double>{r.number("memory.misses"), r.number("rays"),
+                                                             r.number("memory.misses_per_ray")};
+                                },
+                                0.95);
+  ASSERT_EQ(hw.size(), 3u);
+  // By hand: each replicate drops one window's misses and measured instructions.
+  double reps[5], mean = 0;
+  for (int i = 0; i < 5; ++i) {
+    const double xs = 52 - double(x[i]), ms = 510 - double(m[i]);
+    reps[i] = double(std::llround(xs * 5000.0 / ms));  // integer counts are rounded when scaled
+    mean += reps[i] / 5;
+  }
+  double ss = 0;
+  for (double r : reps) ss += (r - mean) * (r - mean);
+  const double expected = student_t_quantile(0.975, 4) * std::sqrt(ss * 4 / 5);
+  EXPECT_NEAR(hw[0], expected, 1e-9);
+  EXPECT_GT(hw[0], 0.0);
+  EXPECT_EQ(hw[1], 0.0);  // an exact total has no interval
+  EXPECT_NEAR(hw[2], expected / 35.0, 1e-9);  // a formula over it: the same, per ray
+}
+
+TEST(BatchMeans, ATailAfterTheLastWindowIsOneMoreBatch) {
+  Tree t;
+  BatchMeans b(&measured);
+  for (int i = 0; i < 3; ++i) {
+    t.measured += 100;
+    t.misses += 10 + i;
+    b.add_window(Values::snapshot(t.root));
+  }
+  t.measured += 40;
+  t.misses += 1;
+  t.retired = 10000;
+  const Values total = Values::snapshot(t.root);
+  EXPECT_EQ(b.batches(total), 4u);
+  // Weight 1: the weighted total is the raw total.
+  const Values w = b.weighted_total(total);
+  EXPECT_EQ(w.count("memory.misses"), total.count("memory.misses"));
+  EXPECT_EQ(w.count("sampling.measured_instructions"), 340u);
+}
+
+TEST(BatchMeans, FullBatchesMergeSoMemoryStaysBounded) {
+  Tree t;
+  BatchMeans b(&measured, 4);
+  for (int i = 0; i < 37; ++i) {
+    t.measured += 100;
+    t.misses += 10 + (i % 3);
+    b.add_window(Values::snapshot(t.root));
+  }
+  const Values total = Values::snapshot(t.root);
+  EXPECT_EQ(b.windows(), 37u);
+  // 4 full batches at most, plus the one filling: 37 windows in batches of 8 -> 4 full + 5.
+  EXPECT_LE(b.batches(total), 5u);
+  EXPECT_GE(b.batches(total), 3u);
+  const Values w = b.weighted_total(total);
+  EXPECT_EQ(w.count("memory.misses"), total.count("memory.misses"));  // nothing lost in merging
+  EXPECT_EQ(w.count("sampling.measured_instructions"), total.count("sampling.measured_instructions"));
+}
+
+TEST(BatchMeans, WeightsCountAWindowOfASparserStretchForMore) {
+  // Two stretches: the first sampled every 4 units (weight 4), the second every unit (weight
+  // 1), with miss densities 0.2 and 0.1 per measured instruction. Each stretch's share of the
+  // frame is its weight times its measured instructions; the weighted ratio recovers the
+  // frame's density, the plain one is pulled towards the densely sampled stretch.
+  Tree t;
+  BatchMeans b(&measured);
+  for (int i = 0; i < 4; ++i) {
+    t.measured += 100;
+    t.misses += 20;
+    b.add_window(Values::snapshot(t.root), 4.0);
+  }
+  b.set_tail_weight(1.0);
+  for (int i = 0; i < 16; ++i) {
+    t.measured += 100;
+    t.misses += 10;
+    b.add_window(Values::snapshot(t.root), 1.0);
+  }
+  t.retired = 3200;  // 1600 instructions in each stretch
+  const Values total = Values::snapshot(t.root);
+  Values w = b.weighted_total(total);
+  finish(w);
+  EXPECT_NEAR(w.number("memory.misses"), 0.2 * 1600 + 0.1 * 1600, 1.0);
+  Values plain = total;
+  finish(plain);
+  EXPECT_NEAR(plain.number("memory.misses"), 3200.0 * 240 / 2000, 1.0);  // 384, not 480
+}
+
+TEST(BatchMeans, FewerThanTwoBatchesGiveNoInterval) {
+  Tree t;
+  BatchMeans b(&measured);
+  t.measured = 100;
+  t.misses = 5;
+  b.add_window(Values::snapshot(t.root));
+  EXPECT_TRUE(b.half_widths(Values::snapshot(t.root), [](Values) { return std::vector<double>{1.0}; }, 0.95).empty());
+}
+
+}  // namespace
+}  // namespace strata::stats
