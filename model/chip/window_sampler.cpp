@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "model/stats/student_t.h"
 
 namespace strata::chip {
 
@@ -79,16 +78,8 @@ double WindowSampler::relative_half_width() const {
   }
   if (!(m > 0)) return 0.0;
   std::vector<double> replicates;
-  double mean = 0;
-  for (const auto& [bc, bm] : sums) {
-    replicates.push_back(m > bm ? (c - bc) / (m - bm) : c / m);
-    mean += replicates.back();
-  }
-  mean /= double(b);
-  double ss = 0;
-  for (double r : replicates) ss += (r - mean) * (r - mean);
-  const double t = stats::student_t_quantile(0.5 + 0.5 * kConfidence, static_cast<unsigned>(b - 1));
-  return t * std::sqrt(ss * double(b - 1) / double(b)) / (c / m);
+  for (const auto& [bc, bm] : sums) replicates.push_back(m > bm ? (c - bc) / (m - bm) : c / m);
+  return stats::jackknife_half_width(replicates, kConfidence) / (c / m);
 }
 
 void WindowSampler::retarget(uint64_t now) {

@@ -84,18 +84,25 @@ std::vector<double> BatchMeans::half_widths(const Values& total,
     if (replicates.back().size() != replicates.front().size())
       throw std::logic_error("BatchMeans: measure() returned a different number of figures for a replicate");
   }
-  const double t = student_t_quantile(0.5 + 0.5 * confidence, static_cast<unsigned>(n - 1));
   std::vector<double> out(replicates.front().size(), 0.0);
+  std::vector<double> column(n);
   for (size_t k = 0; k < out.size(); ++k) {
-    double mean = 0.0;
-    for (const auto& r : replicates) mean += r[k];
-    mean /= double(n);
-    double ss = 0.0;
-    for (const auto& r : replicates) ss += (r[k] - mean) * (r[k] - mean);
-    // The jackknife variance: (n - 1) / n times the replicates' sum of squares.
-    out[k] = t * std::sqrt(ss * double(n - 1) / double(n));
+    for (size_t i = 0; i < n; ++i) column[i] = replicates[i][k];
+    out[k] = jackknife_half_width(column, confidence);
   }
   return out;
+}
+
+double jackknife_half_width(const std::vector<double>& replicates, double confidence) {
+  const size_t n = replicates.size();
+  if (n < 2) return 0.0;
+  double mean = 0.0;
+  for (double r : replicates) mean += r;
+  mean /= double(n);
+  double ss = 0.0;
+  for (double r : replicates) ss += (r - mean) * (r - mean);
+  const double t = student_t_quantile(0.5 + 0.5 * confidence, static_cast<unsigned>(n - 1));
+  return t * std::sqrt(ss * double(n - 1) / double(n));
 }
 
 }  // namespace strata::stats

@@ -30,6 +30,11 @@
 
 namespace strata::stats {
 
+// The half-width at `confidence` of a jackknife estimate from its delete-one replicates:
+// Student's t with n - 1 degrees of freedom times sqrt((n - 1) / n x their sum of squares).
+// 0 for fewer than 2 replicates.
+double jackknife_half_width(const std::vector<double>& replicates, double confidence);
+
 class BatchMeans {
  public:
   // `measured`: the counts a window contributes to, by dotted path and statistic (the

@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""How often does the loosely-timed value lie inside sampled timing's 95% interval?
+
+    experiments/interval_coverage.py [--out out/validate-intervals]
+
+Reads the results of the sweep specs experiments/specs/intervals-lt.json, intervals-sampled.json
+and (optionally) intervals-sampled-cold.json, which run the same frames (3 scenes x 3 designs
+x 2 seeds) loosely timed, sampled, and sampled without functional warming. Prints, per frame
+and metric, the sampled estimate's error against LT and its 95% half-width, then the coverage
+(the share of frames whose LT value lies inside the interval) and how wide the intervals are
+next to the errors; with the cold runs, the bias before and after functional warming. Writes
+the same as coverage.csv in the output folder. Standard library only."""
+import argparse
+import csv
+import json
+import os
+import sys
+
+METRICS = [("frame.cycles", "cycles"), ("memory.l2.accesses", "L2 accesses"), ("memory.dram.bytes", "DRAM bytes"),
+           ("memory.stream.accesses", "stream accesses"), ("energy_nj.total", "energy"),
+           ("memory.l1d.hit_rate", "L1 hit rate")]
+
+
+def load(folder):
+    path = os.path.join(folder, "results.json")
+    try:
+        with open(path) as f:
+            rows = json.load(f)
+    except OSError:
+        return None
+    out = {}
+    for r in rows:
+        if r.get("status") != "done":
+            continue
+        key = (os.path.basename(r["config"]).removesuffix(".json"), r["scene"], r.get("res"), r.get("seed"))
+        out[key] = r
+    return out
+
+
+def value(row, path):
+    for col, v in row.items():
+        if col.split(" [")[0] == path:
+            return v
+    return None
+
+
+def interval(row, path):
+    return value(row, f"intervals.stats.{path}.half_width")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "out",
+                                                  "validate-intervals"))
+    a = ap.parse_args()
+    lt, sampled, cold = (load(os.path.join(a.out, n)) for n in ("lt", "sampled", "sampled-cold"))
+    if not lt or not sampled:
+        sys.exit(f"interval_coverage: run the specs first (scripts/strata-sweep experiments/specs/intervals-lt.json "
+                 f"and intervals-sampled.json); no results under {a.out}")
+    rows, inside, total, ratios = [], {}, {}, {}
+    for key in sorted(set(lt) & set(sampled)):
+        ref, est = lt[key], sampled[key]
+        for path, label in METRICS:
+            r, e, hw = value(ref, path), value(est, path), interval(est, path)
+            if r is None or e is None:
+                continue
+            hw = hw or 0.0
+            err = e - r
+            ok = abs(err) <= hw
+            inside[label] = inside.get(label, 0) + ok
+            total[label] = total.get(label, 0) + 1
+            if hw > 0:
+                ratios.setdefault(label, []).append(abs(err) / hw)
+            rows.append({"design": key[0], "scene": key[1], "res": key[2], "seed": key[3], "metric": label,
+                         "lt": r, "sampled": e, "error": err, "relative error": err / r if r else 0.0,
+                         "half width": hw, "relative half width": hw / abs(e) if e else 0.0, "inside": ok})
+    with open(os.path.join(a.out, "coverage.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print("| design | scene | seed | " + " | ".join(l for _, l in METRICS) + " |")
+    print("|---|---|---|" + "---|" * len(METRICS))
+    by_frame = {}
+    for r in rows:
+        by_frame.setdefault((r["design"], r["scene"], r["seed"]), {})[r["metric"]] = r
+    for (d, s, seed), m in by_frame.items():
+        cells = []
+        for _, label in METRICS:
+            r = m.get(label)
+            if r is None:
+                cells.append("-")
+            elif label == "L1 hit rate":
+                cells.append(f"{100 * r['error']:+.2f} ± {100 * r['half width']:.2f} pt{'' if r['inside'] else ' **out**'}")
+            else:
+                cells.append(f"{100 * r['relative error']:+.1f}% ± {100 * r['relative half width']:.1f}%"
+                             f"{'' if r['inside'] else ' **out**'}")
+        print(f"| {d} | {s} | {seed} | " + " | ".join(cells) + " |")
+    print()
+    print("| metric | LT inside the 95% interval | median abs(error) / half-width |")
+    print("|---|---|---|")
+    for _, label in METRICS:
+        if label in total:
+            rs = sorted(ratios.get(label, [0.0]))
+            print(f"| {label} | {inside[label]} of {total[label]} ({100 * inside[label] / total[label]:.0f}%) | "
+                  f"{rs[len(rs) // 2]:.2f} |")
+    if cold:
+        print()
+        print("Bias against LT before (cold) and after (warm) functional warming, seed 1:")
+        print("| design | scene | L2 accesses cold | warm | DRAM bytes cold | warm | cycles cold | warm |")
+        print("|---|---|---|---|---|---|---|---|")
+        for key in sorted(set(cold) & set(lt)):
+            if key not in sampled:
+                continue
+            cells = []
+            for path in ("memory.l2.accesses", "memory.dram.bytes", "frame.cycles"):
+                r = value(lt[key], path)
+                cells += [f"{100 * (value(cold[key], path) / r - 1):+.1f}%", f"{100 * (value(sampled[key], path) / r - 1):+.1f}%"]
+            print(f"| {key[0]} | {key[1]} | " + " | ".join(cells) + " |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
