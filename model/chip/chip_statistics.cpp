@@ -109,7 +109,8 @@ void Chip::register_stats() {
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },
             Unit::kCount, "1: fast-forward loads and stores kept the L1 data and L2 tags current.");
     s.level("warm_requests", sum(&TmCounters::warm_requests), Unit::kCount,
-            "L1 lines the fast-forward replayed as tag updates (runs of accesses to one line are one).");
+            "Warming requests the fast-forward sent: its loads and stores by L1 line, less runs of accesses to one "
+            "line and loads of lines the L1 is known to hold (they would change nothing).");
     s.derived("fast_forward_instructions", Unit::kCount, "Instructions run functionally (retired - timed).",
               [](const Scope& x) {
                 return x.root().number("instructions.retired") - x.self().number("timed_instructions");

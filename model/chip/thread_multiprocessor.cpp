@@ -39,6 +39,16 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
   warm_log_.line_shift = 0;
   while ((1u << warm_log_.line_shift) < config_.l1d.line_bytes) ++warm_log_.line_shift;
+  if (warming_) {
+    warm_log_.known.assign(config_.l1d.size_bytes / config_.l1d.line_bytes, 0);
+    // Not cached, so not warmed: the TPs' stacks (local memory) and on-chip path state.
+    warm_log_.skip_lo[0] = env.stacks_base;
+    warm_log_.skip_hi[0] = env.stacks_base + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+    if (env.path_state_on_chip) {
+      warm_log_.skip_lo[1] = env.path_begin;
+      warm_log_.skip_hi[1] = env.path_end;
+    }
+  }
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
@@ -229,6 +239,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
   }
   // One request per cache line touched (a pipeline operand may straddle two lines); they
   // issue together and the access completes with the last of them.
+  l1_timed_since_warming_ = true;
   const uint32_t line = config_.l1d.line_bytes;
   uint8_t scratch[256];
   Cycle ready = at;

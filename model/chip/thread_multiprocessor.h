@@ -155,6 +155,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
   WarmLog warm_log_;   // the current fast-forward batch's L1 lines (functional warming)
   bool warming_ = false;
+  bool l1_timed_since_warming_ = true;  // a timed access changed the L1: warm_log_.forget()
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;

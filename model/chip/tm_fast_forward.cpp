@@ -1,5 +1,6 @@
 // Sampled timing inside a TM (docs/sampled-timing.md): the functional fast-forward that runs
 // a TP's instructions in batches at the rates its TM measured (tm_sampler.h keeps those).
+#include <algorithm>
 #include <cmath>
 
 #include "model/chip/tm_thread_processor.h"
@@ -22,6 +23,10 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   sampler_.begin_batch(tp.ff_clock, until);
   if (warming_) {
     warm_log_.clear();
+    if (l1_timed_since_warming_) {
+      warm_log_.forget();
+      l1_timed_since_warming_ = false;
+    }
     tp.memory.set_warm_log(&warm_log_);
   }
   const iss::RunResult r = tp.hart.run(batch);
@@ -45,14 +50,10 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
 }
 
 void ThreadMultiprocessor::replay_warm_log(const Tp& tp) {
-  // The same routing as a timed access (time_data_access): stacks live in the TP's local
-  // memory and on-chip path state in the stream memory, neither in a cache.
-  const uint64_t stacks_end = env_.stacks_base + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+  // The log holds only what changes a tag (tp_memory.h): each entry is one warming request.
   for (const uint64_t e : warm_log_.entries) {
     const uint64_t addr = (e >> 1) << warm_log_.line_shift;
     const bool store = (e & 1u) != 0;
-    if (addr + (uint64_t{1} << warm_log_.line_shift) > env_.stacks_base && addr < stacks_end) continue;
-    if (env_.path_state_on_chip && addr >= env_.path_begin && addr < env_.path_end) continue;
     transport::PooledPayload gp(pool_);
     uint32_t scratch = 0;
     transport::prepare_access(gp, store ? AccessClass::kDataStore : AccessClass::kDataLoad, addr, &scratch, 4,

@@ -4,6 +4,7 @@
 // (through its L1 socket, or the TP's local memory for the stack). Inline, no virtual calls.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -29,23 +30,39 @@ struct AccessRecord {
 };
 
 // Functional warming (sampled timing): the L1 lines a fast-forward batch loaded from or stored
-// to, in order, so the TM can then replay them as tag updates. A run of accesses to one line
-// (the common case: a node's fields, a ray's words) is one entry. Entries are line << 1 | store.
-// The vector keeps its capacity across batches: after the first few, nothing is allocated.
+// to, in order, so the TM can then replay them as tag updates. Entries are line << 1 | store.
+// What would change nothing is left out as it happens, so the log stays short:
+//   - a run of accesses to one line (a node's fields, a ray's words) is one entry;
+//   - addresses no cache holds (the TPs' stacks, on-chip path state) are skipped;
+//   - a load of a line the TM's direct-mapped L1 is known to hold: `known` mirrors, by set,
+//     the lines this log's replays put there. Only the TM uses its L1, so the mirror is exact
+//     until a timed access changes the L1, when the TM calls forget().
+// The vectors keep their capacity: after the first batches, nothing is allocated.
 struct WarmLog {
   std::vector<uint64_t> entries;
+  std::vector<uint64_t> known;  // per L1 set: line + 1, 0 unknown (size: a power of two)
   uint32_t line_shift = 6;
+  uint64_t skip_lo[2] = {0, 0}, skip_hi[2] = {0, 0};  // [lo, hi) byte ranges no cache holds
   uint64_t last = ~uint64_t{0};
   void clear() {
     entries.clear();
     last = ~uint64_t{0};
   }
+  void forget() { std::fill(known.begin(), known.end(), 0); }
   void note(uint32_t addr, uint32_t bytes, bool store) {
+    for (int r = 0; r < 2; ++r)
+      if (addr >= skip_lo[r] && addr < skip_hi[r]) return;
     const uint64_t first = addr >> line_shift, end = (uint64_t{addr} + bytes - 1) >> line_shift;
     for (uint64_t line = first; line <= end; ++line) {
       const uint64_t e = line << 1 | (store ? 1u : 0u);
-      if (e != last) entries.push_back(e);
+      if (e == last) continue;
       last = e;
+      if (!store) {  // the L1 is write-around: only loads allocate in it
+        uint64_t& k = known[line & (known.size() - 1)];
+        if (k == line + 1) continue;
+        k = line + 1;
+      }
+      entries.push_back(e);
     }
   }
 };
