@@ -96,6 +96,8 @@ void Chip::register_stats() {
                   "Loads, stores and pipeline loads in the measured parts.");
     s.count_probe("measured_stream_ops", sum(&TmCounters::stream_requests), Unit::kCount,
                   "Stream-memory operations in the measured parts.");
+    s.count_probe("measured_stream_moves", sum(&TmCounters::stream_moves), Unit::kCount,
+                  "Ray pushes and pops in the measured parts.");
     s.count_probe("measured_cycles", [this] { return schedule_->measured_cycles_before(report_cycle_); },
                   Unit::kCycles, "Cycles of the measured parts (the windows past their warm-up) in the frame.");
     s.level("target_error", [this] { return config_.timing.sample_target_error; }, Unit::kRatio,

@@ -365,6 +365,10 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   MemoryExtension ext;
   uint8_t scratch[48] = {};
   if (counting()) ++counters_.stream_requests;
+  if (call.op == iss::Op::kStStreamPush || call.op == iss::Op::kStStreamPop) {
+    ++counters_.stream_moves_all;
+    if (counting()) ++counters_.stream_moves;
+  }
   if (sampler_.in_batch()) sampler_.note_batch_wait();
   switch (call.op) {
     case iss::Op::kStStreamCapacity:

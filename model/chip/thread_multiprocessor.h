@@ -74,6 +74,8 @@ struct TmCounters {
   uint64_t l1_requests = 0;
   uint64_t path_state_requests = 0;  // on-chip path state: loads and stores sent to the stream memory
   uint64_t stream_requests = 0, stream_push_full = 0;
+  // Ray pushes and pops: every one (exact in every mode), and those of the measured parts.
+  uint64_t stream_moves_all = 0, stream_moves = 0;
   uint64_t global_register_ops = 0;
   uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode
   uint64_t warm_requests = 0;  // sampled, functional warming: L1 lines replayed as tag updates

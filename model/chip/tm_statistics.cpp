@@ -41,6 +41,9 @@ void ThreadMultiprocessor::register_stats() {
            Basis::kDataOps);
   in.count("stream_requests", &k.stream_requests, Unit::kCount, "Stream-memory operations the TPs issued.",
            Basis::kStreamOps);
+  in.count("stream_moves", &k.stream_moves_all, Unit::kCount,
+           "Ray pushes and pops the TPs issued (exact in every mode: sampled timing's basis for them).",
+           Basis::kExact);
   in.count("path_state_requests", &k.path_state_requests, Unit::kCount,
            "Loads and stores of on-chip path state, sent to the stream memory instead of the L1.", Basis::kDataOps);
   in.count("stream_push_full", &k.stream_push_full, Unit::kCount,

@@ -1,5 +1,7 @@
 #include "model/memory/stream_memory.h"
 
+#include "model/stats/stat_values.h"
+
 #include <algorithm>
 #include <string>
 
@@ -23,12 +25,12 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
   using stats::Unit;
   const Counters& c = counters_.counted;
   stats::Group& g = stats_;
-  g.count("accesses", &c.accesses, Unit::kCount, "Operations: pushes, pops, queries and path-state loads and stores.");
-  g.count("pushes", &c.pushes, Unit::kCount, "Ray pushes, refused ones included.");
-  g.count("pops", &c.pops, Unit::kCount, "Ray pops, empty ones included.");
+  g.count("pushes", &c.pushes, Unit::kCount, "Ray pushes, refused ones included.", stats::Basis::kStreamMoves);
+  g.count("pops", &c.pops, Unit::kCount, "Ray pops, empty ones included.", stats::Basis::kStreamMoves);
   g.count("queries", &c.queries, Unit::kCount, "Size, assign and capacity queries (head/count region only).");
-  g.count("full_rejections", &c.full_rejections, Unit::kCount, "Pushes refused because the memory was full (retried).");
-  g.count("empty_pops", &c.empty_pops, Unit::kCount, "Pops that found the buffer empty.");
+  g.count("full_rejections", &c.full_rejections, Unit::kCount, "Pushes refused because the memory was full (retried).",
+          stats::Basis::kStreamMoves);
+  g.count("empty_pops", &c.empty_pops, Unit::kCount, "Pops that found the buffer empty.", stats::Basis::kStreamMoves);
   g.count("assignments", &c.assignments, Unit::kCount, "Treelet buffers handed to TMs.");
   g.count("port_conflicts", &c.port_conflicts, Unit::kCount, "Pushes and pops that found every port busy.");
   g.count("conflict_cycles", &c.conflict_cycles, Unit::kCycles, "Cycles pushes and pops waited for a port.");
@@ -36,6 +38,15 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
           "Loads from the path records kept on chip (design.path_state = on-chip).", stats::Basis::kDataOps);
   g.count("path_writes", &c.path_writes, Unit::kCount, "Stores to the path records kept on chip.",
           stats::Basis::kDataOps);
+  // A sum rather than a count of its own, so that sampled timing scales each part by its
+  // basis (moves, polls, data operations).
+  g.derived("accesses", Unit::kCount, "Operations: pushes + pops + queries + path_reads + path_writes.",
+            [](const stats::Scope& s) {
+              const stats::Values& v = s.self();
+              return v.number("pushes") + v.number("pops") + v.number("queries") + v.number("path_reads") +
+                     v.number("path_writes");
+            },
+            true);
   g.count("bytes_read", &c.bytes_read, Unit::kBytes, "Bytes read: rays popped and path state loaded.");
   g.count("bytes_written", &c.bytes_written, Unit::kBytes, "Bytes written: rays pushed and path state stored.");
   g.level("stored", [this] { return uint64_t{sram_.stored()}; }, Unit::kCount, "Rays stored when the frame ended.");

@@ -37,6 +37,7 @@ const char* basis_name(Basis b) {
     case Basis::kMeasuredInstructions: return "measured instructions";
     case Basis::kDataOps: return "data operations";
     case Basis::kStreamOps: return "stream operations";
+    case Basis::kStreamMoves: return "ray pushes and pops";
     case Basis::kCount: break;
   }
   return "?";

@@ -40,6 +40,7 @@ enum class Basis : uint8_t {
   kMeasuredInstructions,// instructions of the measured window parts (instruction fetch)
   kDataOps,             // loads, stores and pipeline loads of the measured parts
   kStreamOps,           // stream-memory operations of the measured parts
+  kStreamMoves,         // ray pushes and pops of the measured parts (not the idle TPs' polls)
   kCount
 };
 constexpr unsigned kBasisCount = static_cast<unsigned>(Basis::kCount);
@@ -47,7 +48,7 @@ const char* basis_name(Basis b);
 
 // The extrapolation factor of each basis (1 outside sampled timing).
 struct Factors {
-  double of[kBasisCount] = {1, 1, 1, 1, 1, 1};
+  double of[kBasisCount] = {1, 1, 1, 1, 1, 1, 1};
   double operator[](Basis b) const { return of[static_cast<unsigned>(b)]; }
   double& operator[](Basis b) { return of[static_cast<unsigned>(b)]; }
 };
