@@ -53,12 +53,19 @@ def label(z):
     return f"{z >> 20} MB" if z >= 1 << 20 else f"{z >> 10} KB"
 
 
+def size_table(rs, caption, second):
+    """Prints the caption and the header of a table with one column per L2/stream size."""
+    sizes = sorted({size_of(r) for r in rs})
+    print(caption + "\n")
+    print(f"| scene | {second} | " + " | ".join(label(z) for z in sizes) + " |")
+    print("|---|---|" + "---|" * len(sizes))
+    return sizes
+
+
 def fig4(out):
     rs = rows(out, "fig4-traffic-vs-size")
-    sizes = sorted({size_of(r) for r in rs})
-    print("L2 accesses (= L1 misses), and for STRaTA the stream accesses, in millions per frame:\n")
-    print("| scene | series | " + " | ".join(label(z) for z in sizes) + " |")
-    print("|---|---|" + "---|" * len(sizes))
+    sizes = size_table(rs, "L2 accesses (= L1 misses), and for STRaTA the stream accesses, in millions per frame:",
+                       "series")
     for s in scenes_of(rs):
         for d, path, what in (("trax", "memory.l2.accesses", "trax L2"), ("streams", "memory.l2.accesses", "streams L2"),
                               ("streams", "memory.stream.accesses", "streams stream")):
@@ -68,10 +75,7 @@ def fig4(out):
 
 def fig5_7(out):
     rs = rows(out, "fig5-7-energy")
-    sizes = sorted({size_of(r) for r in rs})
-    print("Memory energy per frame in mJ (L2 or L2 + stream memory / DRAM):\n")
-    print("| scene | design | " + " | ".join(label(z) for z in sizes) + " |")
-    print("|---|---|" + "---|" * len(sizes))
+    sizes = size_table(rs, "Memory energy per frame in mJ (L2 or L2 + stream memory / DRAM):", "design")
     for s in scenes_of(rs):
         for d in ("trax", "streams"):
             by = {size_of(r): (num(r, "energy_nj.l2_and_stream") / 1e6, num(r, "energy_nj.dram") / 1e6)

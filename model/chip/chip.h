@@ -81,7 +81,6 @@ class Chip : public sc_core::sc_module {
   const stats::Group& statistics() const { return stats_; }
   // Sampled timing: the windows' samples for the confidence intervals (null in other modes).
   const stats::BatchMeans* window_batches() const { return sampler_ ? &sampler_->batches() : nullptr; }
-  const WindowSampler* window_sampler() const { return sampler_.get(); }
 
  private:
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);

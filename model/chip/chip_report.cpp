@@ -91,10 +91,9 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
   values_ = stats::Values::snapshot(chip.statistics());
   const stats::Values raw = values_;
   // Sampled timing with an error target: the windows of a sparser stretch count for more.
-  const bool weighted = chip.window_batches() != nullptr && !interrupted_;
-  if (weighted) values_ = chip.window_batches()->weighted_total(raw);
+  if (has_intervals()) values_ = chip.window_batches()->weighted_total(raw);
   values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
-  if (weighted) {
+  if (has_intervals()) {
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
       return path.compare(0, 9, "sampling.") == 0;
@@ -105,7 +104,7 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
   }
   values_.append(stats::Values::snapshot(simulation_));
   values_.derive();
-  if (chip.window_batches() != nullptr && !interrupted_) estimate_intervals(raw);
+  if (has_intervals()) estimate_intervals(raw);
 }
 
 void FrameReport::estimate_intervals(const stats::Values& raw) {
@@ -160,7 +159,7 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
   j["simulation"]["quantum_cycles"] = cfg.timing.quantum_cycles;
   if (interrupted_) j["interrupted"] = true;
   j["units"] = values_.units();
-  if (chip_.window_batches() != nullptr && !interrupted_) {
+  if (has_intervals()) {
     // Each estimate's interval beside the tree: intervals.stats mirrors its paths.
     nlohmann::json iv = {{"confidence", kConfidence},
                          {"method", "delete-one-batch jackknife over consecutive batches of sampling windows, "

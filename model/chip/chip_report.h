@@ -55,6 +55,8 @@ class FrameReport {
   std::string interval_note_;
   size_t batches_ = 0, windows_ = 0;
 
+  // Sampled timing, a finished frame: its windows weight the estimates and give them intervals.
+  bool has_intervals() const { return chip_.window_batches() != nullptr && !interrupted_; }
   void estimate_intervals(const stats::Values& raw);
   // " ± 1.2%" for the statistic at `path` (relative), or "" when it has no interval.
   std::string pm(const std::string& path) const;

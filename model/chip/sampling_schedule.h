@@ -5,6 +5,7 @@
 // The chip owns one schedule; the TMs and the window sampler read it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -30,7 +31,6 @@ class SamplingSchedule {
   bool detailed(Cycle t) const { return t - window_of(t) < detail_; }
   Cycle window_end(Cycle window) const { return window + detail_ - 1; }  // its last detailed cycle
   Cycle detail() const { return detail_; }
-  Cycle warmup() const { return warmup_; }
   Cycle period_at(Cycle t) const { return segment_of(t).period; }
 
   // From the window starting at `from` (a window start under the current periods) on, windows
@@ -48,8 +48,8 @@ class SamplingSchedule {
     for (size_t i = 0; i < segments_.size() && segments_[i].from < t; ++i) {
       const Segment& s = segments_[i];
       const Cycle end = i + 1 < segments_.size() && segments_[i + 1].from < t ? segments_[i + 1].from : t;
-      const Cycle span = end - s.from, into = span % s.period;
-      total += span / s.period * part + (into > warmup_ ? (into - warmup_ < part ? into - warmup_ : part) : 0);
+      const Cycle span = end - s.from, into = span % s.period;  // whole periods, then the last one's start
+      total += span / s.period * part + (into > warmup_ ? std::min(into - warmup_, part) : 0);
     }
     return total;
   }

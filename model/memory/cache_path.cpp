@@ -18,10 +18,8 @@ CachePath::CachePath(const CacheGeometry& geometry, uint32_t hit_latency_cycles,
   tr_conflicts_ = trace_.add_rate("bank_conflicts_per_cycle");
 }
 
-void CachePath::warm_read_allocate(tlm::tlm_generic_payload& gp, const transport::MemoryExtension* ext,
-                                   bool model_misses) {
+void CachePath::warm_read_allocate(tlm::tlm_generic_payload& gp, const transport::MemoryExtension* ext) {
   gp.set_response_status(tlm::TLM_OK_RESPONSE);
-  if (!model_misses) return;
   const uint64_t line = core_.line_of(gp.get_address());
   const transport::DataClass data = transport::data_class_of(ext);
   if (gp.is_write()) {  // write-around: the store changes the level below only

@@ -67,10 +67,10 @@ class CachePath {
   // A read that allocates on a miss (L1 loads and fetches). `model_misses` false: always a hit.
   Result read_allocate(Request& r, bool model_misses, transport::ServedBy hit_level,
                        transport::ServedBy merged_level);
-  // Functional warming of a cache that allocates on reads and sends stores on (the L1s): the
-  // tags change as the access would change them, a miss or a store goes on to the level below
-  // as a warming request too. `model_misses` false: a cache that always hits keeps no tags.
-  void warm_read_allocate(tlm::tlm_generic_payload& gp, const transport::MemoryExtension* ext, bool model_misses);
+  // Functional warming of a cache that allocates on reads and sends stores on (the L1 data
+  // cache): the tags change as the access would change them, a miss or a store goes on to the
+  // level below as a warming request too.
+  void warm_read_allocate(tlm::tlm_generic_payload& gp, const transport::MemoryExtension* ext);
 
   // Counts a lookup outcome of a read (hits, merged, reordered).
   void count_read_outcome(const Request& r, CacheCore::Outcome o);

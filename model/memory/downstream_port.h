@@ -38,6 +38,11 @@ class DownstreamPort {
   uint64_t bytes() const { return bytes_; }
 
  private:
+  // What send() and warm() set alike: command, address, the scratch buffer, the origin's ids,
+  // the access class and data class, timing only.
+  void prepare(transport::PooledPayload& p, tlm::tlm_command cmd, uint64_t addr, uint32_t bytes,
+               const transport::MemoryExtension* origin, transport::DataClass data);
+
   tlm::tlm_initiator_socket<>& socket_;
   transport::Clock clock_;
   transport::PayloadPool pool_{2};

@@ -22,7 +22,7 @@ void L1DataCache::trace(sc_core::sc_trace_file* file, const TraceWindow& window)
 void L1DataCache::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   auto* ext = gp.get_extension<transport::MemoryExtension>();
   const AccessClass access = transport::access_class_of(gp, ext);
-  if (transport::is_warming(ext)) return path_.warm_read_allocate(gp, ext, true);
+  if (transport::is_warming(ext)) return path_.warm_read_allocate(gp, ext);
   CachePath::Request r;
   if (!path_.begin(gp, ext, delay, access == AccessClass::kDataLoad || access == AccessClass::kDataStore, r)) return;
   CachePath::Result res{r.answer, ServedBy::kL1, true, false};
