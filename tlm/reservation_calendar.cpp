@@ -46,6 +46,63 @@ Cycle ReservationCalendar::first_free(Cycle from) const {
   return kNone;
 }
 
+Cycle ReservationCalendar::first_below(Cycle from, uint32_t limit, Cycle until) const {
+  const Cycle end = std::min(base_ + horizon_, until);
+  if (limit >= capacity_) {
+    const Cycle f = first_free(std::max(from, base_));
+    return f < end ? f : kNone;
+  }
+  Cycle c = std::max(from, base_);
+  if (limit <= below_limit_ && c >= below_lo_ && c < below_hi_) c = below_hi_;
+  while (c < end) {
+    const uint32_t slot = static_cast<uint32_t>(c & mask_);
+    const uint32_t bit = slot & 63;
+    if (block_[slot >> 6] != (c >> 6)) return c;  // a block nothing is booked in yet
+    // Full cycles hold capacity_ >= limit units: skip them a word at a time.
+    const uint64_t below = bit == 0 ? 0 : ((uint64_t{1} << bit) - 1);
+    const uint64_t word = full_[slot >> 6] | below;
+    if (word == ~uint64_t{0}) {
+      c += 64 - bit;
+      continue;
+    }
+    const uint32_t skip = static_cast<uint32_t>(__builtin_ctzll(~word)) - bit;
+    c += skip;
+    if (c >= end) break;
+    if (used_[static_cast<uint32_t>(c & mask_)] < limit) return c;
+    ++c;
+  }
+  return kNone;
+}
+
+Cycle ReservationCalendar::book_below(Cycle earliest, uint32_t limit) {
+  if (limit >= capacity_) {
+    const Booking b = book(earliest, 1);
+    return b.first < base_ + horizon_ ? b.first : kNone;
+  }
+  const Cycle asked = std::max(earliest, base_);
+  const Cycle f = first_below(asked, limit);
+  if (f == kNone) return kNone;
+  // [asked, f) holds at least `limit` units in every cycle. Keep it as the skip if it joins
+  // the remembered run (same limit) or is long enough to be worth remembering.
+  if (f > asked) {
+    if (limit == below_limit_ && asked <= below_hi_ && f >= below_lo_) {
+      below_lo_ = std::min(below_lo_, asked);
+      below_hi_ = std::max(below_hi_, f);
+    } else if (f - asked >= 8 || limit != below_limit_) {
+      below_limit_ = limit;
+      below_lo_ = asked;
+      below_hi_ = f;
+    }
+  }
+  const uint32_t slot = claim(f);
+  used_[slot] = static_cast<uint16_t>(used_[slot] + 1);
+  if (used_[slot] == capacity_) full_[slot >> 6] |= uint64_t{1} << (slot & 63);
+  if (limit == below_limit_ && f == below_hi_ && used_[slot] >= limit) below_hi_ = f + 1;
+  if (f == run_hi_ && used_[slot] == capacity_) run_hi_ = f + 1;  // book()'s full run grew too
+  latest_end_ = std::max(latest_end_, f + 1);
+  return f;
+}
+
 uint32_t ReservationCalendar::claim(Cycle c) {
   const uint32_t slot = static_cast<uint32_t>(c & mask_);
   const uint32_t w = slot >> 6;

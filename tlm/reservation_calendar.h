@@ -43,6 +43,17 @@ class ReservationCalendar {
   // larger than one cycle's capacity spreads over as many cycles as it needs.
   Booking book(Cycle earliest, uint32_t units);
 
+  // Books one unit in the earliest cycle >= `earliest` that has fewer than `limit` units used
+  // (1 <= limit <= units_per_cycle): a resource some of whose units are lent elsewhere for a
+  // while (the XU crossbar's reconfigurable FP units). kNone if no such cycle lies inside the
+  // window; nothing is booked then. Like book(), it remembers the run of cycles its last
+  // search found at the limit, so a backlog is scanned once, not once per request.
+  Cycle book_below(Cycle earliest, uint32_t limit);
+  // The cycle book_below would book, without booking it; kNone also if it lies at or past
+  // `until`.
+  Cycle first_below(Cycle from, uint32_t limit, Cycle until = ~Cycle{0}) const;
+  static constexpr Cycle kNone = ~Cycle{0};
+
   // Global time has reached `now`: no request can be made for an earlier cycle any more.
   void retire_before(Cycle now);
 
@@ -61,7 +72,6 @@ class ReservationCalendar {
   uint64_t overflow_bookings() const { return overflows_; }
 
  private:
-  static constexpr Cycle kNone = ~Cycle{0};
   Cycle first_free(Cycle from) const;
   // The full-bits word of c's block (0 if the block holds an older one).
   uint64_t full_word(Cycle c) const {
@@ -81,6 +91,10 @@ class ReservationCalendar {
   Cycle base_ = 0;
   Cycle latest_end_ = 0;
   Cycle run_lo_ = 0, run_hi_ = 0;  // [lo, hi): cycles known to be full (a search's skip)
+  // [lo, hi): cycles known to hold at least below_limit_ units (book_below's skip). Counts
+  // only grow while a cycle is in the window, so a run stays valid for that limit and below.
+  Cycle below_lo_ = 0, below_hi_ = 0;
+  uint32_t below_limit_ = 0;
   Cycle overflow_head_ = 0;  // [head, tail): hull of bookings placed beyond the window
   Cycle overflow_tail_ = 0;
   uint64_t overflows_ = 0;

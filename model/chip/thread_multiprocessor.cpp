@@ -77,14 +77,7 @@ tm::TpStats ThreadMultiprocessor::tp_stats() const {
   tm::TpStats sum;
   for (const auto& tp : tps_) {
     const tm::TpStats& s = tp->timing.stats();
-    sum.issued += s.issued;
-    sum.fetches += s.fetches;
-    for (size_t i = 0; i < sum.issued_by_class.size(); ++i) sum.issued_by_class[i] += s.issued_by_class[i];
     for (size_t i = 0; i < sum.stall_cycles.size(); ++i) sum.stall_cycles[i] += s.stall_cycles[i];
-    sum.int_reads += s.int_reads;
-    sum.int_writes += s.int_writes;
-    sum.fp_reads += s.fp_reads;
-    sum.fp_writes += s.fp_writes;
   }
   return sum;
 }

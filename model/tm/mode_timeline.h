@@ -42,6 +42,12 @@ class ModeTimeline {
   // From `c` on, nothing changes any more: the current segment has begun.
   bool settled_at(Cycle c) const { return c >= segments_.back().start; }
   const Segment& current() const { return segments_.back(); }
+  // The first segment start after c (the capacity may change there); ~0 if none.
+  Cycle next_change_after(Cycle c) const {
+    Cycle next = ~Cycle{0};
+    for (std::size_t i = segments_.size(); i-- > 1 && segments_[i].start > c;) next = segments_[i].start;
+    return next;
+  }
 
   // Forgets segments that ended at or before c (no request can be made for them any more).
   void forget_before(Cycle c);

@@ -78,7 +78,21 @@ OpTiming timing_of(Op op, const TmConfig& c) {
 
 OpTimingTable::OpTimingTable(const TmConfig& config) {
   config.validate();
-  for (unsigned i = 0; i < iss::kOpCount; ++i) table_[i] = timing_of(static_cast<Op>(i), config);
+  for (unsigned i = 0; i < iss::kOpCount; ++i) {
+    OpTiming t = timing_of(static_cast<Op>(i), config);
+    const iss::OpInfo& info = iss::op_info(static_cast<Op>(i));
+    for (unsigned slot = 0; slot < 4; ++slot) {
+      const uint8_t b = static_cast<uint8_t>(1u << slot);
+      switch (info.role[slot]) {
+        case iss::Role::kIntDst: t.int_results |= b; [[fallthrough]];
+        case iss::Role::kIntSrc: t.int_operands |= b; break;
+        case iss::Role::kFpDst: t.fp_results |= b; [[fallthrough]];
+        case iss::Role::kFpSrc: t.fp_operands |= b; break;
+        default: break;
+      }
+    }
+    table_[i] = t;
+  }
 }
 
 }  // namespace strata::tm

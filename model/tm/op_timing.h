@@ -40,6 +40,12 @@ struct OpTiming {
   uint8_t reads_pipe = 0;                  // PipeState bits that must be ready before issue
   uint8_t writes_pipe = 0;                 // PipeState bits set ready with the result
   uint32_t latency = 0;                    // issue to result; 0 for kMemory (the caller says)
+  // The op's register operands, by slot (bit i: rd, rs1, rs2, rs3), taken from its roles once
+  // here so the TP's scoreboard does not switch on roles per instruction.
+  uint8_t int_operands = 0;  // int sources and destinations (waited for; x0 is skipped)
+  uint8_t fp_operands = 0;   // FP sources and destinations
+  uint8_t int_results = 0;   // int destinations
+  uint8_t fp_results = 0;    // FP destinations
 };
 
 class OpTimingTable {

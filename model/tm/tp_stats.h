@@ -1,8 +1,5 @@
-// What one TP's timing counts: instructions by class, why it waited, and the fetch and
-// register-file traffic that the energy model prices.
+// What one TP's timing counts: why it waited, cycle by cycle, by cause.
 #pragma once
-
-#include "model/iss/counters.h"
 
 #include <array>
 #include <cstdint>
@@ -23,15 +20,11 @@ constexpr const char* stall_cause_name(StallCause c) {
   return c < StallCause::kCount ? kNames[static_cast<unsigned>(c)] : "invalid";
 }
 
+// Only the stalls: what the TPs issued, and their register-file traffic, the ISS counts
+// already (iss::Counters), so the timing does not count them a second time per instruction.
 struct TpStats {
-  uint64_t issued = 0;
-  uint64_t fetches = 0;  // one per issued instruction: in order, no prediction, no refetch
-  std::array<uint64_t, iss::kClassCount> issued_by_class{};
   std::array<uint64_t, kStallCauseCount> stall_cycles{};
-  uint64_t int_reads = 0, int_writes = 0;  // register-file accesses, x0 excluded (as the ISS)
-  uint64_t fp_reads = 0, fp_writes = 0;
 
-  uint64_t of(iss::InstrClass c) const { return issued_by_class[static_cast<unsigned>(c)]; }
   uint64_t stalls(StallCause c) const { return stall_cycles[static_cast<unsigned>(c)]; }
   uint64_t total_stalls() const {
     uint64_t sum = 0;

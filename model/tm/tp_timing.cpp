@@ -42,18 +42,15 @@ TpTiming::Gate TpTiming::gate(const iss::Decoded& d, const OpTiming& t, Cycle fe
   };
   // A destination counts too: a pending write to it must land first, so a short op
   // cannot overtake a long one to the same register (WAW).
-  const iss::OpInfo& info = iss::op_info(d.op);
   const uint8_t regs[4] = {d.rd, d.rs1, d.rs2, d.rs3};
-  for (unsigned i = 0; i < 4; ++i) {
-    const unsigned r = regs[i] & 31u;
-    switch (info.role[i]) {
-      case iss::Role::kIntSrc:
-      case iss::Role::kIntDst:
-        if (r != 0) consider(x_ready_[r], bit(x_from_memory_, r));
-        break;
-      case iss::Role::kFpSrc:
-      case iss::Role::kFpDst: consider(f_ready_[r], bit(f_from_memory_, r)); break;
-      default: break;
+  // In slot order: on a tie the first operand names the stall's cause.
+  for (unsigned m = t.int_operands | t.fp_operands; m != 0; m &= m - 1) {
+    const unsigned slot = static_cast<unsigned>(__builtin_ctz(m));
+    const unsigned r = regs[slot] & 31u;
+    if (bit(t.int_operands, slot)) {
+      if (r != 0) consider(x_ready_[r], bit(x_from_memory_, r));
+    } else {
+      consider(f_ready_[r], bit(f_from_memory_, r));
     }
   }
   if (t.reads_pipe != 0)  // only the fused ops and pipeline loads
@@ -71,27 +68,19 @@ void TpTiming::retire(const iss::Decoded& d, const OpTiming& t, const Gate& g, C
   stall(g.memory ? StallCause::kMemory : StallCause::kOperand, g.ready - g.fetched);
   stall(unit_wait, issue - g.ready);
 
-  const iss::OpInfo& info = iss::op_info(d.op);
-  ++stats_.issued;
-  ++stats_.fetches;
-  ++stats_.issued_by_class[static_cast<unsigned>(info.cls)];
-  const iss::RfAccesses rf = iss::rf_slot_accesses(d.rf);
-  stats_.int_reads += rf.int_reads;
-  stats_.int_writes += rf.int_writes;
-  stats_.fp_reads += rf.fp_reads;
-  stats_.fp_writes += rf.fp_writes;
-
   // gate() waited for pending writes to the destinations, so `result` is the latest one.
   const uint8_t regs[4] = {d.rd, d.rs1, d.rs2, d.rs3};
-  for (unsigned i = 0; i < 4; ++i) {
-    const unsigned r = regs[i] & 31u;
-    if (info.role[i] == iss::Role::kIntDst && r != 0) {
+  for (unsigned m = t.int_results; m != 0; m &= m - 1) {
+    const unsigned r = regs[__builtin_ctz(m)] & 31u;
+    if (r != 0) {
       x_ready_[r] = result;
       assign_bit(x_from_memory_, r, from_memory);
-    } else if (info.role[i] == iss::Role::kFpDst) {
-      f_ready_[r] = result;
-      assign_bit(f_from_memory_, r, from_memory);
     }
+  }
+  for (unsigned m = t.fp_results; m != 0; m &= m - 1) {
+    const unsigned r = regs[__builtin_ctz(m)] & 31u;
+    f_ready_[r] = result;
+    assign_bit(f_from_memory_, r, from_memory);
   }
   // Pipeline input registers are not waited for on write (strata.settmax may follow a
   // strata.ldray still in flight), so keep whichever write lands last.

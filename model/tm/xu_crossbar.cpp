@@ -80,8 +80,31 @@ bool XuCrossbar::fits(const Unit& u, Cycle c, Cycle& retry) const {
 Cycle XuCrossbar::find(const Unit& u, Cycle from) const {
   Cycle c = std::max(from, u.calendar.base());
   Cycle retry = c;
-  while (!fits(u, c, retry)) c = retry;
-  return c;
+  if (u.reconfigurable < 0 || u.occupancy != 1) {
+    while (!fits(u, c, retry)) c = retry;
+    return c;
+  }
+  // A pipelined reconfigurable unit: its capacity is piecewise constant, changing only where
+  // an op's [start, start + latency) meets a mode change. Inside a stretch of one capacity the
+  // calendar scans for the first cycle below it; only the few starts that straddle a change
+  // are tried one by one (fits()). Same answer as trying every cycle, without the cost.
+  const unsigned k = static_cast<unsigned>(u.reconfigurable);
+  const Cycle window_end = u.calendar.base() + u.calendar.horizon();
+  for (;;) {
+    const Cycle change = timeline_.settled_at(c) ? window_end : std::min(window_end, timeline_.next_change_after(c));
+    if (c + u.latency <= change) {
+      // Starts in [c, change - latency] all see one segment's capacity.
+      const Cycle stop = change - u.latency + 1;
+      const Cycle f = u.calendar.first_below(c, timeline_.general_units(k, c, c + u.latency), stop);
+      if (f != transport::ReservationCalendar::kNone) return f;
+      c = stop;
+      if (c >= window_end)
+        throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
+                                 " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
+    }
+    if (fits(u, c, retry)) return c;  // a start whose op straddles a change (fits throws past the window)
+    c = retry;
+  }
 }
 
 void XuCrossbar::book(Unit& u, Cycle start) {
@@ -100,6 +123,17 @@ Cycle XuCrossbar::place(Unit& u, Cycle from) {
     // word at a time) gives the answer.
     const Cycle start = u.calendar.book(c, 1).first;
     if (start >= u.calendar.base() + u.calendar.horizon())
+      throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
+                               " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
+    return start;
+  }
+  if (u.occupancy == 1 && timeline_.settled_at(c)) {
+    // The current mode holds from c on, so the capacity is one number: the calendar finds the
+    // first cycle below it, skipping the backlog it already knows (box mode leaves few
+    // general units, and a TM's TPs queue long behind them).
+    const Cycle start =
+        u.calendar.book_below(c, timeline_.current().general[static_cast<unsigned>(u.reconfigurable)]);
+    if (start == transport::ReservationCalendar::kNone)
       throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
                                " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
     return start;

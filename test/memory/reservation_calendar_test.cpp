@@ -1,8 +1,13 @@
 // The reservation calendar alone: out-of-order booking, capacity per cycle, recycling of
-// the window and bookings beyond it.
+// the window, bookings beyond it, and booking below a lowered capacity.
 #include "tlm/reservation_calendar.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <random>
 
 namespace {
 
@@ -99,6 +104,62 @@ TEST(ReservationCalendar, StaleSlotsReadAsEmptyAfterTheWindowMoves) {
   EXPECT_EQ(cal.used(128), 0u);
   EXPECT_EQ(cal.used(127), 1u);
   EXPECT_EQ(cal.used(99), 0u);  // before the window
+}
+
+// book_below: a resource with some units lent away books in the first cycle under the limit.
+TEST(ReservationCalendar, BookBelowTakesTheFirstCycleUnderTheLimit) {
+  ReservationCalendar cal(8, 1024);  // 8 FP multipliers, 6 of them in the box pipeline
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(cal.book_below(10, 2), 10u);
+  EXPECT_EQ(cal.book_below(10, 2), 11u);  // cycle 10 holds 2: at the limit
+  EXPECT_EQ(cal.book(10, 1).first, 10u);  // the full capacity still has room there
+  EXPECT_EQ(cal.used(10), 3u);
+  for (int i = 0; i < 100; ++i) cal.book_below(20, 2);  // a backlog of 50 cycles at the limit
+  EXPECT_EQ(cal.book_below(20, 2), 70u);
+  EXPECT_EQ(cal.book_below(30, 2), 70u);  // inside the remembered run: straight past it
+  EXPECT_EQ(cal.book_below(30, 3), 30u);  // a higher limit is not held back by that run
+  EXPECT_EQ(cal.book_below(30, 8), 30u);  // the full capacity: book()'s own search
+  EXPECT_EQ(cal.used(30), 4u);
+  EXPECT_EQ(cal.book_below(2000, 2), ReservationCalendar::kNone);  // beyond the window
+  EXPECT_EQ(cal.first_below(71, 2), 71u);
+  EXPECT_EQ(cal.overflow_bookings(), 0u);
+}
+
+// Against a plain map of units per cycle, through random bookings at random limits, both
+// kinds of booking and a moving window: the remembered runs never change an answer.
+TEST(ReservationCalendar, BookBelowMatchesAReferenceModel) {
+  constexpr uint32_t kCapacity = 8;
+  ReservationCalendar cal(kCapacity, 512);
+  std::map<uint64_t, uint32_t> used;
+  uint64_t base = 0;
+  std::mt19937_64 rng(20261202);
+  for (int i = 0; i < 20000; ++i) {
+    if (i % 100 == 99) {  // about 2.5 units a cycle: a backlog that stays inside the window
+      base += 40;
+      cal.retire_before(base);
+    }
+    const uint64_t earliest = base + rng() % 64;
+    if (rng() % 4 == 0) {
+      const uint32_t units = 1 + static_cast<uint32_t>(rng() % 3);
+      const auto b = cal.book(earliest, units);
+      uint32_t left = units;
+      for (uint64_t c = earliest; left > 0; ++c) {
+        const uint32_t take = std::min(kCapacity - used[c], left);
+        if (take > 0 && left == units) {
+          ASSERT_EQ(b.first, c);
+        }
+        used[c] += take;
+        left -= take;
+      }
+    } else {
+      const uint32_t limit = 1 + static_cast<uint32_t>(rng() % 3) * 2;  // 1, 3 or 5
+      uint64_t expect = earliest;
+      while (used[expect] >= limit) ++expect;
+      ASSERT_EQ(cal.book_below(earliest, limit), expect) << "booking " << i;
+      ++used[expect];
+    }
+  }
+  for (uint64_t c = base; c < base + 512; ++c) ASSERT_EQ(cal.used(c), used[c]) << "cycle " << c;
+  EXPECT_EQ(cal.overflow_bookings(), 0u);
 }
 
 }  // namespace
