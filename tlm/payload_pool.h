@@ -50,20 +50,24 @@ class PooledPayload {
   tlm::tlm_generic_payload* gp_;
 };
 
-// Sets a pooled payload up for one memory access of the given class: command, address, data,
-// and the extension's request fields (its response fields are cleared).
-inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr, void* data, uint32_t bytes,
-                           uint32_t initiator_id, uint32_t tm_id, uint32_t treelet = kNoTreelet,
-                           bool timing_only = false, bool functional = false, bool uncounted = false) {
+// Sets a payload up for one memory access of the given class: every field a target reads
+// (command, address, data, byte enables, DMI hint, response) and the extension's request
+// fields (its response fields are cleared). Complete, so a payload can be reused as is.
+inline void prepare_access(tlm::tlm_generic_payload& gp, MemoryExtension& ext, AccessClass access, uint64_t addr,
+                           void* data, uint32_t bytes, uint32_t initiator_id, uint32_t tm_id,
+                           uint32_t treelet = kNoTreelet, bool timing_only = false, bool functional = false,
+                           bool uncounted = false) {
   const bool write = access == AccessClass::kDataStore || access == AccessClass::kStreamPush ||
                      access == AccessClass::kStreamPathWrite;
-  gp->set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-  gp->set_address(addr);
-  gp->set_data_ptr(static_cast<unsigned char*>(data));
-  gp->set_data_length(bytes);
-  gp->set_streaming_width(bytes);
-  gp->set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  MemoryExtension& ext = gp.ext();
+  gp.set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  gp.set_address(addr);
+  gp.set_data_ptr(static_cast<unsigned char*>(data));
+  gp.set_data_length(bytes);
+  gp.set_streaming_width(bytes);
+  gp.set_byte_enable_ptr(nullptr);
+  gp.set_byte_enable_length(0);
+  gp.set_dmi_allowed(false);
+  gp.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
   ext.initiator_id = initiator_id;
   ext.tm_id = tm_id;
   ext.access = access;
@@ -74,6 +78,14 @@ inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr,
   ext.warm = false;
   ext.data = default_data_class(access);
   ext.reset_response();
+}
+
+// The same for a pooled payload.
+inline void prepare_access(PooledPayload& gp, AccessClass access, uint64_t addr, void* data, uint32_t bytes,
+                           uint32_t initiator_id, uint32_t tm_id, uint32_t treelet = kNoTreelet,
+                           bool timing_only = false, bool functional = false, bool uncounted = false) {
+  prepare_access(*gp, gp.ext(), access, addr, data, bytes, initiator_id, tm_id, treelet, timing_only, functional,
+                 uncounted);
 }
 
 }  // namespace strata::transport

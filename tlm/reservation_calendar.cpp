@@ -103,6 +103,31 @@ Cycle ReservationCalendar::book_below(Cycle earliest, uint32_t limit) {
   return f;
 }
 
+Cycle ReservationCalendar::first_full(Cycle from, Cycle to) const {
+  for (Cycle c = from; c < to;) {
+    const uint32_t bit = static_cast<uint32_t>(c & mask_) & 63;
+    const uint64_t word = full_word(c) >> bit;
+    if (word != 0) {
+      const Cycle found = c + static_cast<Cycle>(__builtin_ctzll(word));
+      return found < to ? found : kNone;
+    }
+    c += 64 - bit;
+  }
+  return kNone;
+}
+
+Cycle ReservationCalendar::first_gap(Cycle from, uint32_t length) const {
+  const Cycle end = base_ + horizon_;
+  Cycle c = first_free(std::max(from, base_));
+  while (c != kNone) {
+    if (c + length > end) return kNone;
+    const Cycle blocked = first_full(c, c + length);
+    if (blocked == kNone) return c;
+    c = first_free(blocked + 1);
+  }
+  return kNone;
+}
+
 uint32_t ReservationCalendar::claim(Cycle c) {
   const uint32_t slot = static_cast<uint32_t>(c & mask_);
   const uint32_t w = slot >> 6;

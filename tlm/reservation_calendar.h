@@ -52,6 +52,9 @@ class ReservationCalendar {
   // The cycle book_below would book, without booking it; kNone also if it lies at or past
   // `until`.
   Cycle first_below(Cycle from, uint32_t limit, Cycle until = ~Cycle{0}) const;
+  // The earliest cycle c >= `from` such that every cycle of [c, c + length) still has room,
+  // within the window; kNone if there is none. (A unit that is busy for `length` cycles.)
+  Cycle first_gap(Cycle from, uint32_t length) const;
   static constexpr Cycle kNone = ~Cycle{0};
 
   // Global time has reached `now`: no request can be made for an earlier cycle any more.
@@ -73,6 +76,7 @@ class ReservationCalendar {
 
  private:
   Cycle first_free(Cycle from) const;
+  Cycle first_full(Cycle from, Cycle to) const;  // the first full cycle in [from, to), or kNone
   // The full-bits word of c's block (0 if the block holds an older one).
   uint64_t full_word(Cycle c) const {
     const uint32_t w = static_cast<uint32_t>(c & mask_) >> 6;

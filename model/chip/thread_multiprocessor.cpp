@@ -28,6 +28,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       config_(*env.config),
       tm_id_(tm_id),
       clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
+      access_ext_(new transport::MemoryExtension),  // owned by access_gp_ from here (set_extension)
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
       xus_(env.config->tm),
@@ -35,6 +36,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions) {
+  access_gp_.set_extension(access_ext_);
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
   warm_log_.line_shift = 0;
@@ -175,20 +177,20 @@ Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMu
                                      AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                                      Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
                                      MemoryExtension* result) {
-  transport::PooledPayload gp(pool_);
-  transport::prepare_access(gp, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only,
+  tlm::tlm_generic_payload& gp = access_gp_;
+  MemoryExtension& ext = *access_ext_;
+  transport::prepare_access(gp, ext, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only,
                             sampler_.in_batch(), !counting());
   if ((access == AccessClass::kDataLoad || access == AccessClass::kDataStore) && env_.data_classes)
-    gp.ext().data = env_.data_classes->of(addr);
-  const MemoryExtension& ext = gp.ext();
+    ext.data = env_.data_classes->of(addr);
   sc_core::sc_time delay = clock_.delay_until_at(stamp_, at);
-  port->b_transport(*gp, delay);
-  if (gp->get_response_status() != tlm::TLM_OK_RESPONSE) {
+  port->b_transport(gp, delay);
+  if (gp.get_response_status() != tlm::TLM_OK_RESPONSE) {
     fail(tp, "memory access to 0x" + [&] {
       char b[16];
       std::snprintf(b, sizeof b, "%08llx", static_cast<unsigned long long>(addr));
       return std::string(b);
-    }() + " was refused: " + gp->get_response_string());
+    }() + " was refused: " + gp.get_response_string());
     return at;
   }
   if (result) *result = ext;

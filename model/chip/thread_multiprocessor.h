@@ -141,7 +141,12 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   const ChipConfig& config_;
   uint32_t tm_id_;
   transport::Clock clock_;
-  transport::PayloadPool pool_;
+  transport::PayloadPool pool_;  // fast-forward's warming accesses
+  // The payload of the TM's own accesses. Its thread has one in flight at a time (b_transport
+  // blocks, and no target keeps a payload), so one payload, set up in full per access, serves
+  // them all: no pool round trip and no extension lookup per access.
+  tlm::tlm_generic_payload access_gp_;
+  transport::MemoryExtension* access_ext_;
   tm::OpTimingTable op_table_;
   transport::Cycle burst_slack_;
   tm::XuCrossbar xus_;

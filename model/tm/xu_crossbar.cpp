@@ -80,7 +80,17 @@ bool XuCrossbar::fits(const Unit& u, Cycle c, Cycle& retry) const {
 Cycle XuCrossbar::find(const Unit& u, Cycle from) const {
   Cycle c = std::max(from, u.calendar.base());
   Cycle retry = c;
-  if (u.reconfigurable < 0 || u.occupancy != 1) {
+  if (u.reconfigurable < 0) {
+    // A fixed capacity: an op fits where its occupancy finds room in every cycle, which the
+    // calendar's full-cycle bits answer a word at a time (a busy divider has a long backlog).
+    const Cycle f = u.calendar.first_gap(c, u.occupancy);
+    if (f == transport::ReservationCalendar::kNone)
+      throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
+                               " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles "
+                               "or call retire_before() as global time advances");
+    return f;
+  }
+  if (u.occupancy != 1) {
     while (!fits(u, c, retry)) c = retry;
     return c;
   }
@@ -189,19 +199,21 @@ Cycle XuCrossbar::issue_fused_multiply_add(Cycle earliest) {
   slide_window(earliest);
   Unit& mul = unit(XuClass::kFpMul);
   Unit& add = unit(XuClass::kFpAdd);
+  // The first start with a multiplier free then and an adder free mul.latency later. An adder
+  // found only at a > m + latency rules out every start before a - latency: skip to there.
   Cycle c = earliest;
   for (;;) {
     const Cycle m = find(mul, c);
-    Cycle retry = 0;
-    if (fits(add, m + mul.latency, retry)) {
+    const Cycle a = find(add, m + mul.latency);
+    if (a == m + mul.latency) {
       book(mul, m);
-      book(add, m + mul.latency);
+      book(add, a);
       count(XuClass::kFpMul, m);
-      count(XuClass::kFpAdd, m + mul.latency);
+      count(XuClass::kFpAdd, a);
       ++stats_.fused_multiply_adds;
       return m;
     }
-    c = m + 1;
+    c = a - mul.latency;
   }
 }
 

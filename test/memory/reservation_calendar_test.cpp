@@ -125,7 +125,8 @@ TEST(ReservationCalendar, BookBelowTakesTheFirstCycleUnderTheLimit) {
 }
 
 // Against a plain map of units per cycle, through random bookings at random limits, both
-// kinds of booking and a moving window: the remembered runs never change an answer.
+// kinds of booking and a moving window: the remembered runs never change an answer, and
+// first_gap finds the first stretch with room.
 TEST(ReservationCalendar, BookBelowMatchesAReferenceModel) {
   constexpr uint32_t kCapacity = 8;
   ReservationCalendar cal(kCapacity, 512);
@@ -157,6 +158,12 @@ TEST(ReservationCalendar, BookBelowMatchesAReferenceModel) {
       ASSERT_EQ(cal.book_below(earliest, limit), expect) << "booking " << i;
       ++used[expect];
     }
+    // first_gap: the first start whose `length` cycles all have room (a non-pipelined unit).
+    const uint32_t length = 1 + static_cast<uint32_t>(rng() % 20);
+    uint64_t gap = earliest;
+    for (uint64_t c = gap; c < gap + length; ++c)
+      if (used[c] >= kCapacity) gap = c + 1;
+    ASSERT_EQ(cal.first_gap(earliest, length), gap) << "gap " << i;
   }
   for (uint64_t c = base; c < base + 512; ++c) ASSERT_EQ(cal.used(c), used[c]) << "cycle " << c;
   EXPECT_EQ(cal.overflow_bookings(), 0u);
