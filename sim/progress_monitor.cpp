@@ -26,7 +26,7 @@ void ProgressMonitor::arm() {
   g_previous_int = std::signal(SIGINT, on_signal);
   g_previous_term = std::signal(SIGTERM, on_signal);
   start_ = std::chrono::steady_clock::now();
-  print(false);  // the first line says the simulation has started (and Ctrl-C now stops it cleanly)
+  print_line(false);  // the first line says the simulation has started (and Ctrl-C now stops it cleanly)
 }
 
 void ProgressMonitor::disarm() {
@@ -34,7 +34,7 @@ void ProgressMonitor::disarm() {
   std::signal(SIGTERM, g_previous_term);
 }
 
-void ProgressMonitor::print(bool final) {
+void ProgressMonitor::print_line(bool final) {
   if (!show_) return;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const uint32_t done = chip_.pixels_done(), total = chip_.pixel_count();
@@ -61,11 +61,11 @@ void ProgressMonitor::run() {
     sc_core::wait(cycle * double(step));
     cycles += step;
     if (chip_.finished()) {
-      print(true);
+      print_line(true);
       return;
     }
     if (cycles >= next_print) {
-      print(false);
+      print_line(false);
       next_print += interval_;
     }
     if (g_signal != 0 || (cycle_limit_ > 0 && cycles >= cycle_limit_)) {

@@ -36,7 +36,7 @@ class ProgressMonitor : public sc_core::sc_module {
 
  private:
   void run();
-  void print(bool final);
+  void print_line(bool final);
 
   const chip::Chip& chip_;
   uint64_t interval_;

@@ -40,10 +40,16 @@ void require(bool ok, const std::string& message) {
 }  // namespace
 
 void EnergyConfig::validate() const {
-  for (double v : {register_file_access_nj, fp_add_nj, fp_mul_nj, fp_cmp_nj, fp_div_nj, fp_inv_sqrt_nj,
-                   int_mul_nj, int_div_nj, box_test_nj, triangle_test_nj})
+  const std::pair<double, const char*> fields[] = {
+      {register_file_access_nj, "register_file_access_nj"}, {fp_add_nj, "fp_add_nj"}, {fp_mul_nj, "fp_mul_nj"},
+      {fp_cmp_nj, "fp_cmp_nj"}, {fp_div_nj, "fp_div_nj"}, {fp_inv_sqrt_nj, "fp_inv_sqrt_nj"},
+      {int_mul_nj, "int_mul_nj"}, {int_div_nj, "int_div_nj"}, {box_test_nj, "box_test_nj"},
+      {triangle_test_nj, "triangle_test_nj"}};
+  for (const auto& [v, field] : fields)
     // An upper bound too: 1e308 nJ per operation overflows the frame's sums to infinity.
-    if (!(v >= 0.0 && v <= 1e6)) throw std::invalid_argument("energies must be 0..1e6 nJ per operation, got " + std::to_string(v));
+    if (!(v >= 0.0 && v <= 1e6))
+      throw std::invalid_argument(std::string(field) + ": energies must be 0..1e6 nJ per operation, got " +
+                                  std::to_string(v));
 }
 
 void ChipConfig::bind(ConfigBinder& b) {
@@ -149,6 +155,10 @@ void ChipConfig::finalize() {
   require(clock_ghz > 0.0 && clock_ghz <= 100.0, "clock_ghz: must be in (0, 100]");
   require(tp_stack_bytes >= 256 && tp_stack_bytes % 16 == 0,
           "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
+  // A global register access waits this long: 2^32-1 would stall every TP for ever.
+  require(global_register_latency_cycles <= memory::kMaxLatencyCycles,
+          "global_register_latency_cycles: must be at most " + std::to_string(memory::kMaxLatencyCycles) +
+              " cycles, got " + std::to_string(global_register_latency_cycles));
   require(timing.quantum_cycles >= 1 && timing.quantum_cycles <= 65536,
           "timing.quantum_cycles: must be 1..65536, got " + std::to_string(timing.quantum_cycles));
   require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");

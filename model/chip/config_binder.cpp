@@ -94,7 +94,8 @@ void ConfigBinder::apply_value(const std::string& path, const nlohmann::json& va
   const auto it = fields_.find(path);
   if (it == fields_.end()) throw ConfigError(source + ": unknown key '" + path + "'");
   if (!it->second.read(value))
-    throw ConfigError(source + ": " + path + ": expected " + it->second.type + ", got " + value.dump());
+    throw ConfigError(source + ": " + path + ": expected " + it->second.type + ", got " +
+                      value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
 void ConfigBinder::apply_object(const nlohmann::json& obj, const std::string& prefix,
@@ -119,7 +120,16 @@ void ConfigBinder::apply_override(const std::string& assignment) {
     throw ConfigError("--set " + assignment + ": expected key=value");
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
-  if (value.is_discarded()) value = text;  // a bare word is a string
+  if (value.is_discarded()) {
+    // A bare word is a string. JSON holds only UTF-8, and the config is echoed as JSON (stats.json):
+    // other bytes would make that echo throw (a fuzz-found crash: the error message's own dump).
+    try {
+      (void)nlohmann::json(text).dump();
+    } catch (const nlohmann::json::type_error&) {
+      throw ConfigError("--set " + path + ": the value is not valid UTF-8");
+    }
+    value = text;
+  }
   apply_value(path, value, "--set " + assignment);
 }
 

@@ -10,7 +10,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace strata::iss {
@@ -22,6 +25,32 @@ struct MemoryFallback {
   void* context = nullptr;
   bool (*load)(void* context, uint32_t addr, unsigned size, uint32_t& value) = nullptr;
   bool (*store)(void* context, uint32_t addr, unsigned size, uint32_t value) = nullptr;
+};
+
+// Zeroed bytes from calloc, which takes fresh pages from the OS already zero: a program with a
+// large .bss or data region (up to 3 GiB for `render --engine iss`) costs only the pages it
+// touches, where std::vector's value-initialisation wrote every byte up front (a fuzz-found
+// "hang": a 1.75 GiB p_memsz took over 10 s to zero under ASan).
+template <class T>
+struct ZeroedAllocator {
+  using value_type = T;
+  ZeroedAllocator() = default;
+  template <class U>
+  ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}
+  T* allocate(size_t n) {
+    if (void* p = std::calloc(n, sizeof(T))) return static_cast<T*>(p);
+    throw std::bad_alloc();
+  }
+  void deallocate(T* p, size_t) noexcept { std::free(p); }
+  // Value-initialisation leaves calloc's zeros; copies construct as usual.
+  template <class U>
+  void construct(U*) noexcept {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  friend bool operator==(const ZeroedAllocator&, const ZeroedAllocator&) { return true; }
+  friend bool operator!=(const ZeroedAllocator&, const ZeroedAllocator&) { return false; }
 };
 
 class FlatMemory {
@@ -80,7 +109,7 @@ class FlatMemory {
  private:
   uint32_t base_;
   uint32_t size_;
-  std::vector<uint8_t> bytes_;
+  std::vector<uint8_t, ZeroedAllocator<uint8_t>> bytes_;
   MemoryFallback fallback_;
 };
 

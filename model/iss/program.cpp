@@ -12,6 +12,7 @@ std::string hex(uint32_t v) {
 }
 
 constexpr uint64_t kDataAlignment = 1u << 20;
+constexpr uint64_t kMaxCodeBytes = uint64_t{64} << 20;
 
 // [segments][stack][data], the stack top 16-byte aligned, the data 1 MiB aligned.
 FlatMemory build_memory(const ElfImage& elf, uint32_t stack_bytes, uint32_t data_bytes,
@@ -46,6 +47,11 @@ CodeImage build_code(const ElfImage& elf, const FlatMemory& memory) {
     high = std::max<uint64_t>(high, (uint64_t{s.vaddr} + s.memsz + 3) & ~uint64_t{3});
   }
   if (high == 0) throw ElfError(elf.path + ": no executable segment");
+  // Every code word is predecoded up front, so a code span of gigabytes (a fuzz-found hang: an
+  // executable p_memsz of 1.75 GiB) would take minutes; real firmware is a few KiB.
+  if (high - low > kMaxCodeBytes)
+    throw ElfError(elf.path + ": executable segments span " + std::to_string(high - low) + " bytes, more than " +
+                   std::to_string(kMaxCodeBytes) + " (64 MiB)");
   std::vector<uint32_t> words(static_cast<size_t>((high - low) / 4));
   memory.read(static_cast<uint32_t>(low), words.data(), words.size() * 4);
   return CodeImage(static_cast<uint32_t>(low), std::move(words));

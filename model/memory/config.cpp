@@ -31,6 +31,14 @@ void need_energy(const char* field, double nj) {
   // Bounded: 1e308 nJ per access would overflow the frame's energy sums to infinity.
   if (!(nj >= 0.0 && nj <= 1e6)) throw std::invalid_argument(std::string(field) + ": must be 0..1e6 nJ per access");
 }
+// An SRAM without a given energy takes it from the CACTI table, which covers only some sizes.
+void need_table_energy(const char* field, uint64_t bytes) {
+  try {
+    (void)sram_access_energy_nj(bytes);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(field) + ": " + e.what());
+  }
+}
 // Tags and banks use shifts and masks, so the geometry is in powers of two.
 void cache_geometry(const char* cache, uint32_t size, uint32_t banks, uint32_t line, uint32_t ways) {
   const std::string p(cache);
@@ -68,7 +76,7 @@ void L2Config::validate() const {
   need_latency("l2.hit_latency_cycles", hit_latency_cycles);
   need_horizon("l2.calendar_horizon_cycles", calendar_horizon_cycles);
   if (access_energy_nj) need_energy("l2.access_energy_nj", *access_energy_nj);
-  else (void)energy_per_access_nj();  // throws if the size is outside the table
+  else need_table_energy("l2.size_bytes", size_bytes);
 }
 
 double L2Config::energy_per_access_nj() const {
@@ -87,7 +95,7 @@ void StreamMemoryConfig::validate() const {
   need_latency("stream.access_latency_cycles", access_latency_cycles);
   need_latency("stream.query_latency_cycles", query_latency_cycles);
   if (access_energy_nj) need_energy("stream.access_energy_nj", *access_energy_nj);
-  else (void)energy_per_access_nj();
+  else need_table_energy("stream.size_bytes", size_bytes);
 }
 
 double StreamMemoryConfig::energy_per_access_nj() const {

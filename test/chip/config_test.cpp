@@ -116,6 +116,18 @@ TEST(ChipConfig, OutOfRangeValuesAreRefusedNamingTheField) {
   }
 }
 
+// Found by fuzz_chip_config: a bare-word value that is not UTF-8 made the error message's JSON
+// dump throw nlohmann's type_error (std::terminate in the fuzzer); as a string field's value it
+// would have made the config's JSON echo throw later. Now it is a ConfigError naming the field.
+TEST(ChipConfig, AnOverrideThatIsNotUtf8IsRefusedNamingTheField) {
+  const std::string trax = config_dir() + "trax.json";
+  for (const std::string set : {"tms=4\xb9", "design.name=x\xff" "y"}) {
+    const std::string e = error_of(trax, {set});
+    EXPECT_NE(e.find(set.substr(0, set.find('=')) + ": the value is not valid UTF-8"), std::string::npos) << e;
+  }
+  EXPECT_EQ(load_chip_config(trax, {"design.name=caf\xc3\xa9"}).design.name, "caf\xc3\xa9");
+}
+
 TEST(ChipConfig, AFolderAsTheConfigIsNamed) {
   const std::string e = error_of(config_dir(), {});
   EXPECT_NE(e.find("cannot open config file: not a regular file"), std::string::npos) << e;
