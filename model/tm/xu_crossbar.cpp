@@ -18,6 +18,13 @@ const TmConfig& validated(const TmConfig& config) {
   return config;
 }
 
+// A booking that would fall past a calendar's window: the horizon is too short for the run.
+[[noreturn]] void beyond_window_error(const char* unit) {
+  throw std::runtime_error(std::string("XuCrossbar: ") + unit +
+                           " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles "
+                           "or call retire_before() as global time advances");
+}
+
 constexpr unsigned kMul = 0;  // GeneralUnits indices
 constexpr unsigned kAdd = 1;
 
@@ -58,10 +65,7 @@ XuCrossbar::XuCrossbar(const TmConfig& config)
 
 bool XuCrossbar::fits(const Unit& u, Cycle c, Cycle& retry) const {
   const Cycle window_end = u.calendar.base() + u.calendar.horizon();
-  if (c + u.occupancy > window_end)
-    throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
-                             " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles "
-                             "or call retire_before() as global time advances");
+  if (c + u.occupancy > window_end) beyond_window_error(u.name);
   // A reconfigurable op needs a unit that stays general for as long as the op is in it.
   const uint32_t capacity =
       u.reconfigurable < 0 ? u.count
@@ -85,9 +89,7 @@ Cycle XuCrossbar::find(const Unit& u, Cycle from) const {
     // calendar's full-cycle bits answer a word at a time (a busy divider has a long backlog).
     const Cycle f = u.calendar.first_gap(c, u.occupancy);
     if (f == transport::ReservationCalendar::kNone)
-      throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
-                               " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles "
-                               "or call retire_before() as global time advances");
+      beyond_window_error(u.name);
     return f;
   }
   if (u.occupancy != 1) {
@@ -109,8 +111,7 @@ Cycle XuCrossbar::find(const Unit& u, Cycle from) const {
       if (f != transport::ReservationCalendar::kNone) return f;
       c = stop;
       if (c >= window_end)
-        throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
-                                 " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
+        beyond_window_error(u.name);
     }
     if (fits(u, c, retry)) return c;  // a start whose op straddles a change (fits throws past the window)
     c = retry;
@@ -133,8 +134,7 @@ Cycle XuCrossbar::place(Unit& u, Cycle from) {
     // word at a time) gives the answer.
     const Cycle start = u.calendar.book(c, 1).first;
     if (start >= u.calendar.base() + u.calendar.horizon())
-      throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
-                               " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
+      beyond_window_error(u.name);
     return start;
   }
   if (u.occupancy == 1 && timeline_.settled_at(c)) {
@@ -144,8 +144,7 @@ Cycle XuCrossbar::place(Unit& u, Cycle from) {
     const Cycle start =
         u.calendar.book_below(c, timeline_.current().general[static_cast<unsigned>(u.reconfigurable)]);
     if (start == transport::ReservationCalendar::kNone)
-      throw std::runtime_error(std::string("XuCrossbar: ") + u.name +
-                               " bookings reach beyond the calendar window; raise TmConfig::xu_horizon_cycles");
+      beyond_window_error(u.name);
     return start;
   }
   const Cycle start = find(u, c);
