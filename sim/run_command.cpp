@@ -17,6 +17,7 @@
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
 #include "sim/output_file.h"
+#include "sim/pipeline_backend.h"
 #include "sim/progress_monitor.h"
 #include "sim/resolution.h"
 #include "sim/scene_source.h"
@@ -91,13 +92,15 @@ void run_frame(RunOptions o) {
   if (o.vcd_start > o.vcd_end)
     throw std::runtime_error("--vcd-start " + std::to_string(o.vcd_start) + " is after --vcd-end " +
                              std::to_string(o.vcd_end));
+  std::string vcd_base = o.vcd;  // SystemC adds the .vcd
+  if (vcd_base.size() > 4 && vcd_base.substr(vcd_base.size() - 4) == ".vcd") vcd_base.resize(vcd_base.size() - 4);
+  if (config.pipeline_impl == chip::PipelineImpl::kRtl)
+    inputs.pipeline_backend = rtl_pipeline_backend(config, {o.vcd.empty() ? "" : vcd_base, o.vcd_start, o.vcd_end});
   chip::Chip chip("chip", config, inputs);
 
   sc_core::sc_trace_file* vcd = nullptr;
   if (!o.vcd.empty()) {
-    std::string base = o.vcd;
-    if (base.size() > 4 && base.substr(base.size() - 4) == ".vcd") base.resize(base.size() - 4);
-    vcd = sc_core::sc_create_vcd_trace_file(base.c_str());
+    vcd = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
     vcd->set_time_unit(1, sc_core::SC_NS);
     chip.trace(vcd, memory::TraceWindow(o.vcd_window_cycles, o.vcd_start, o.vcd_end));
   }
@@ -122,6 +125,9 @@ void run_frame(RunOptions o) {
   std::printf("%s", report.summary().c_str());
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
+  if (!o.vcd.empty() && config.pipeline_impl == chip::PipelineImpl::kRtl)
+    std::printf("wrote          the RTL pipelines' VCD: %s (one per TM using the RTL)\n",
+                (vcd_base + ".rtl_tm<k>.vcd").c_str());
 
   if (progress.cycle_limit_reached())
     throw std::runtime_error("--max-cycles " + std::to_string(o.max_cycles) +

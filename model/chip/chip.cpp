@@ -60,6 +60,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.path_begin = layout_.path_table;
   env.path_end = layout_.path_table + uint64_t{layout_.path_slots} * kernels::kPathRecordBytes;
   env.report_cycle = &report_cycle_;
+  pipeline_backend_ = inputs.pipeline_backend;
+  env.pipeline_backend = &pipeline_backend_;
   for (uint32_t t = 0; t < config_.tms; ++t) {
     const std::string n = std::to_string(t);
     l1d_.push_back(std::make_unique<memory::L1DataCache>(("l1d_" + n).c_str(), config_.l1d, backing_));

@@ -13,6 +13,7 @@
 
 #include "firmware/abi/frame_abi.h"
 #include "model/chip/chip_config.h"
+#include "model/chip/fused_backend_factory.h"
 #include "model/chip/global_registers.h"
 #include "model/chip/guest_layout.h"
 #include "model/chip/thread_multiprocessor.h"
@@ -38,6 +39,8 @@ struct FrameInputs {
   uint64_t scene_image_bytes = 0;
   uint32_t treelet_bytes = 0;  // the image is placed at an address aligned to it
   kernels::FrameParams frame{};
+  // tm.pipeline_impl=rtl: makes each such TM's fused-pipeline backend (fused_backend_factory.h).
+  FusedBackendFactory pipeline_backend;
 };
 
 class Chip : public sc_core::sc_module {
@@ -85,6 +88,7 @@ class Chip : public sc_core::sc_module {
  private:
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);
   void register_stats();  // chip_statistics.cpp
+  void register_rtl_pipeline_stats(stats::Group& group);
 
   ChipConfig config_;
   memory::SparseMemory backing_;
@@ -107,6 +111,7 @@ class Chip : public sc_core::sc_module {
   transport::Cycle report_cycle_ = 0;
   kernels::RayCounters ray_totals_{};
   uint64_t ray_total_ = 0;
+  FusedBackendFactory pipeline_backend_;  // the TMs' environment points at it
   std::unique_ptr<SamplingSchedule> schedule_;  // sampled timing only
   std::unique_ptr<WindowSampler> sampler_;     // sampled timing only
 };

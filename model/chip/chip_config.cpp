@@ -3,7 +3,9 @@
 #include "firmware/abi/frame_abi.h"
 
 #include <fstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "model/memory/stream_sram.h"
 
@@ -35,6 +37,27 @@ void checked(const char* section, F&& validate) {
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw ConfigError(message);
+}
+
+// tm.pipeline_impl_tms: "all" (every TM), or TM indices below `tms`, comma-separated.
+std::vector<bool> parse_tm_list(const std::string& text, uint32_t tms) {
+  const std::string field = "tm.pipeline_impl_tms";
+  if (text == "all") return std::vector<bool>(tms, true);
+  std::vector<bool> chosen(tms, false);
+  size_t from = 0;
+  while (true) {
+    const size_t comma = text.find(',', from);
+    const std::string item = text.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    const bool digits = !item.empty() && item.size() <= 9 && item.find_first_not_of("0123456789") == std::string::npos;
+    require(digits, field + ": expected \"all\" or comma-separated TM indices (e.g. \"0\" or \"0,3\"), got \"" +
+                        text + "\"");
+    const uint32_t tm = static_cast<uint32_t>(std::stoul(item));
+    require(tm < tms, field + ": TM " + item + " does not exist (tms is " + std::to_string(tms) + ")");
+    chosen[tm] = true;
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  return chosen;
 }
 
 }  // namespace
@@ -90,6 +113,8 @@ void ChipConfig::bind(ConfigBinder& b) {
   bind_pipeline(b, "tm.pipelines.triangle", tm.pipelines.triangle);
   b.bind("tm.pipelines.triangle_divide_latency", &tm.pipelines.triangle_divide_latency);
   b.bind("tm.pipelines.reconfigure_cycles", &tm.pipelines.reconfigure_cycles);
+  b.bind_enum("tm.pipeline_impl", &pipeline_impl, {"model", "rtl"});
+  b.bind_text_or_index("tm.pipeline_impl_tms", &pipeline_impl_tms);
   b.bind("tm.xu_horizon_cycles", &tm.xu_horizon_cycles);
   b.bind("tm.xu_history_cycles", &tm.xu_history_cycles);
 
@@ -177,6 +202,10 @@ void ChipConfig::finalize() {
             "timing.sample_period_cycles: must be longer than timing.sample_detail_cycles (" +
                 std::to_string(t.sample_detail_cycles) + "), got " + std::to_string(t.sample_period_cycles));
   }
+  (void)parse_tm_list(pipeline_impl_tms, tms);
+  // Without the fused pipelines a design issues no fused test: RTL pipelines would do nothing.
+  require(pipeline_impl == PipelineImpl::kModel || design.pipelines,
+          "tm.pipeline_impl: rtl needs a design with the fused pipelines (design.pipelines=true)");
   tm.tps = tps_per_tm;
   stream.tms = tms;
   stream.threads = threads();
@@ -214,6 +243,10 @@ void ChipConfig::finalize() {
   for (uint32_t horizon : {l1d.calendar_horizon_cycles, l2.calendar_horizon_cycles, dram.calendar_horizon_cycles})
     require(horizon > timing.quantum_cycles,
             "timing.quantum_cycles: must be below every calendar horizon (" + std::to_string(horizon) + ")");
+}
+
+bool ChipConfig::rtl_pipelines(uint32_t tm_index) const {
+  return pipeline_impl == PipelineImpl::kRtl && parse_tm_list(pipeline_impl_tms, tms).at(tm_index);
 }
 
 ChipConfig load_chip_config(const std::filesystem::path& file, const std::vector<std::string>& overrides) {

@@ -28,6 +28,12 @@ enum class PathStatePlacement : uint8_t {
   kDram,
 };
 
+// What computes the fused box and triangle tests' results (the timing always comes from the
+// TM config, through the XU crossbar): the C++ pipeline model (firmware/common/intersect.h),
+// or the verilated RTL pipelines (rtl/pipelines/, docs/rtl-cosim.md), which the program running
+// the chip must supply (FrameInputs::pipeline_backend).
+enum class PipelineImpl : uint8_t { kModel, kRtl };
+
 struct DesignConfig {
   std::string name = "strata-pipelines";
   bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)
@@ -85,6 +91,10 @@ struct ChipConfig {
   uint32_t global_register_latency_cycles = 4;
   TimingConfig timing;
   tm::TmConfig tm;
+  PipelineImpl pipeline_impl = PipelineImpl::kModel;  // tm.pipeline_impl
+  // tm.pipeline_impl_tms: the TMs that use pipeline_impl, "all" or a comma-separated list of
+  // TM indices ("0", "0,3"); the others use the C++ model.
+  std::string pipeline_impl_tms = "all";
   memory::L1DataCacheConfig l1d;
   memory::L1InstructionCacheConfig l1i;
   memory::L2Config l2;
@@ -98,6 +108,8 @@ struct ChipConfig {
   // field. stream.treelets (one head pointer per treelet) is set from the scene by the caller.
   void finalize();
   uint32_t threads() const { return tms * tps_per_tm; }
+  // Whether TM `tm` runs its fused tests on the RTL pipelines (tm.pipeline_impl and _tms).
+  bool rtl_pipelines(uint32_t tm) const;
   void bind(ConfigBinder& b);
 };
 

@@ -263,6 +263,20 @@ std::string FrameReport::summary() const {
     s += format("warning        %llu cache lookups arrived out of time order in precise mode, which should never "
                 "happen: the precise reference is not exact\n",
                 ull(reordered));
+  if (v.has("rtl_pipelines")) {  // tm.pipeline_impl=rtl
+    const stats::Values& r = v.group("rtl_pipelines");
+    const uint64_t mismatches = r.count("box_latency_mismatches") + r.count("triangle_latency_mismatches");
+    s += format("RTL pipelines  %llu box + %llu triangle tests computed by the verilated RTL in %llu TM(s); RTL latency "
+                "vs config: %llu box and %llu triangle mismatches, %llu slow-path triangle tests (+2 cycles, charged "
+                "the config's latency) [exact]\n",
+                ull(r.count("box_tests")), ull(r.count("triangle_tests")), ull(r.count("tms")),
+                ull(r.count("box_latency_mismatches")), ull(r.count("triangle_latency_mismatches")),
+                ull(r.count("triangle_slow_path_tests")));
+    if (mismatches > 0)
+      s += format("warning        %llu fused tests took a different number of cycles in the RTL than "
+                  "tm.pipelines.<box|triangle>.latency charges: the RTL and the config disagree\n",
+                  ull(mismatches));
+  }
   s += format("simulator      %.2f s wall, %.2f M simulated instructions/s, %.3f M rays/s\n",
               v.number("simulation.wall_seconds"), v.number("simulation.instructions_per_second") * 1e-6,
               v.number("simulation.rays_per_second") * 1e-6);

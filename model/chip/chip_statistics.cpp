@@ -132,6 +132,16 @@ void Chip::register_stats() {
     root.child(&s);
   }
 
+  if (config_.pipeline_impl == PipelineImpl::kRtl) {
+    stats::Group& rtl = own("rtl_pipelines",
+                            "tm.pipeline_impl=rtl only: the fused tests the verilated RTL pipelines computed, and the "
+                            "latency the RTL showed against the one the TM config charges (the chip's timing is the "
+                            "config's). Exact in every timing mode: every fused test goes to the RTL.",
+                            Basis::kExact);
+    register_rtl_pipeline_stats(rtl);
+    root.child(&rtl);
+  }
+
   std::vector<const stats::Group*> instructions, xus, l1d, l1i;
   for (size_t t = 0; t < tms_.size(); ++t) {
     instructions.push_back(&tms_[t]->instruction_stats());
@@ -228,6 +238,39 @@ void Chip::register_stats() {
     return all > 0 ? s.self().number("reordered_lookups") / all : 0.0;
   });
   root.child(&fidelity);
+}
+
+void Chip::register_rtl_pipeline_stats(stats::Group& g) {
+  const auto sum = [this](uint64_t iss::FusedBackendCounts::*field) {
+    return [this, field] {
+      uint64_t n = 0;
+      for (const auto& t : tms_)
+        if (t->pipeline_backend() != nullptr) n += t->pipeline_backend()->counts().*field;
+      return n;
+    };
+  };
+  g.level("tms", [this] {
+    uint64_t n = 0;
+    for (const auto& t : tms_) n += t->pipeline_backend() != nullptr ? 1 : 0;
+    return n;
+  }, Unit::kCount, "TMs whose fused tests ran on the RTL (tm.pipeline_impl_tms).");
+  using C = iss::FusedBackendCounts;
+  g.count_probe("box_tests", sum(&C::box_tests), Unit::kCount, "Box tests the RTL box pipeline computed.");
+  g.count_probe("triangle_tests", sum(&C::triangle_tests), Unit::kCount,
+                "Triangle tests the RTL triangle pipeline computed (strata.tridiv stays in C++).");
+  g.count_probe("box_latency_mismatches", sum(&C::box_latency_mismatches), Unit::kCount,
+                "Box tests whose RTL latency differed from tm.pipelines.box.latency; 0 when the RTL and the config "
+                "agree.");
+  g.count_probe("triangle_latency_mismatches", sum(&C::triangle_latency_mismatches), Unit::kCount,
+                "Triangle tests whose RTL latency differed from tm.pipelines.triangle.latency (the slow path's "
+                "documented 2 extra cycles excepted); 0 when the RTL and the config agree.");
+  g.count_probe("triangle_slow_path_tests", sum(&C::triangle_slow_path_tests), Unit::kCount,
+                "Triangle tests on the RTL's exact-fallback path, 2 cycles longer than the config's latency, "
+                "which the chip charged the ordinary latency (docs/rtl-cosim.md).");
+  g.count_probe("box_rtl_cycles", sum(&C::box_cycles), Unit::kCycles,
+                "Cycles of the RTL box pipeline's own clock run for the tests (not chip cycles).");
+  g.count_probe("triangle_rtl_cycles", sum(&C::triangle_cycles), Unit::kCycles,
+                "Cycles of the RTL triangle pipeline's own clock run for the tests (not chip cycles).");
 }
 
 }  // namespace strata::chip

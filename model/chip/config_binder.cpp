@@ -74,6 +74,21 @@ void ConfigBinder::bind(const std::string& path, std::string* field) {
              },
              [field] { return nlohmann::json(*field); }});
 }
+void ConfigBinder::bind_text_or_index(const std::string& path, std::string* field) {
+  add(path, {"a string or a whole number",
+             [field](const nlohmann::json& j) {
+               uint32_t index = 0;
+               if (j.is_string()) {
+                 *field = j.get<std::string>();
+               } else if (read_unsigned(j, &index)) {
+                 *field = std::to_string(index);
+               } else {
+                 return false;
+               }
+               return true;
+             },
+             [field] { return nlohmann::json(*field); }});
+}
 void ConfigBinder::bind(const std::string& path, std::optional<double>* field) {
   add(path, {"a finite number or null",
              [field](const nlohmann::json& j) {

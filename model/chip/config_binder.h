@@ -30,6 +30,9 @@ class ConfigBinder {
   void bind(const std::string& path, double* field);
   void bind(const std::string& path, bool* field);
   void bind(const std::string& path, std::string* field);
+  // A string that may also be written as a whole number (a list of indices with one entry:
+  // `--set tm.pipeline_impl_tms=1` reads as the number 1), kept as its decimal text.
+  void bind_text_or_index(const std::string& path, std::string* field);
   void bind(const std::string& path, std::optional<double>* field);
   // An enumeration stored as a string: `names` lists the accepted spellings in value order.
   template <class Enum>

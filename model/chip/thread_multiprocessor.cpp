@@ -51,6 +51,16 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       warm_log_.skip_hi[1] = env.path_end;
     }
   }
+  if (config_.rtl_pipelines(tm_id)) {
+    if (env.pipeline_backend == nullptr || !*env.pipeline_backend)
+      throw ConfigError("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
+    FusedBackendSetup setup;
+    setup.tm = tm_id;
+    setup.cycle = [this] { return current_ != nullptr ? current_->timing.next_issue() : global_cycle_; };
+    pipeline_backend_ = (*env.pipeline_backend)(setup);
+    if (!pipeline_backend_) throw ConfigError("tm.pipeline_impl: rtl, but no RTL pipeline backend was made for TM " +
+                                              std::to_string(tm_id));
+  }
   for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
     const uint32_t thread = tm_id * config_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
@@ -59,6 +69,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
     t.hart.set_x(2, t.stack_hi);  // crt0 keeps a preset sp
     t.hart.use_cycle_clock(t.timing.clock());  // mcycle counts this TP's cycles
     if (env.tohost) t.hart.set_tohost(env.tohost);
+    t.pipe.set_backend(pipeline_backend_.get());  // null: the C++ pipeline model
   }
   register_stats();
   tr_mode_ = trace_.add_level("pipeline_mode");

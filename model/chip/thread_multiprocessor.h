@@ -28,6 +28,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "model/chip/chip_config.h"
+#include "model/chip/fused_backend_factory.h"
 #include "model/chip/global_registers.h"
 #include "model/chip/tm_sampler.h"
 #include "model/chip/tp_memory.h"
@@ -62,6 +63,8 @@ struct TmEnvironment {
   const SamplingSchedule* schedule = nullptr;
   // The cycle statistics are taken at (the frame's end): the XUs count each mode's cycles up to it.
   const transport::Cycle* report_cycle = nullptr;
+  // tm.pipeline_impl=rtl: makes the backend of each TM that uses it (null otherwise).
+  const FusedBackendFactory* pipeline_backend = nullptr;
 };
 
 struct TmCounters {
@@ -107,6 +110,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool failed() const { return !error_.empty(); }
   const std::string& error() const { return error_; }
   bool finished() const { return finished_; }
+  // The backend computing this TM's fused tests, or null for the C++ pipeline model.
+  const iss::FusedPipelineBackend* pipeline_backend() const { return pipeline_backend_.get(); }
 
   // VCD: pipeline mode, fused ops and instructions per window, current treelet.
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
@@ -150,6 +155,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   tm::OpTimingTable op_table_;
   transport::Cycle burst_slack_;
   tm::XuCrossbar xus_;
+  std::unique_ptr<iss::FusedPipelineBackend> pipeline_backend_;  // before tps_: they point at it
   std::vector<std::unique_ptr<Tp>> tps_;
   TmCounters counters_;
   std::string error_;

@@ -69,12 +69,13 @@ HookResult FunctionalStrataHook::pipeline(const HookCall& call) {
     case Op::kStSetTmax: std::memcpy(&ray_.tmax, &call.rs1, 4); return ok();
     case Op::kStBoxTest: {
       if (mode_ != Mode::kBox) return illegal("strata.boxtest needs the box pipeline configured");
-      const BoxTestResult r = box_test(ray_, box_);
+      const BoxTestResult r = backend_ ? backend_->box_test(ray_, box_) : box_test(ray_, box_);
       return ok(r.hit ? 1u : 0u, 0, float_bits(r.t_entry));
     }
     case Op::kStTriangleTest:
       if (mode_ != Mode::kTriangle) return illegal("strata.tritest needs the triangle pipeline configured");
-      last_triangle_ = triangle_test(ray_, triangle_, last_triangle_.partial);
+      last_triangle_ = backend_ ? backend_->triangle_test(ray_, triangle_, last_triangle_.partial)
+                                : triangle_test(ray_, triangle_, last_triangle_.partial);
       return ok(last_triangle_.hit ? 1u : 0u);
     case Op::kStTriangleDivide: {
       if (mode_ != Mode::kTriangle) return illegal("strata.tridiv needs the triangle pipeline configured");

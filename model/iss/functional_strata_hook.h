@@ -3,6 +3,7 @@
 // per-treelet buffers with a ray capacity. No timing, one TM.
 #pragma once
 
+#include "model/iss/fused_pipeline_backend.h"
 #include "model/iss/pipeline_reference.h"
 #include "model/iss/strata_hook.h"
 
@@ -32,6 +33,9 @@ class FunctionalStrataHook : public StrataHook {
   uint32_t global(unsigned index) const { return globals_.at(index); }
   void set_global(unsigned index, uint32_t value) { globals_.at(index) = value; }
   std::size_t rays_queued() const { return rays_queued_; }
+  // Where strata.boxtest and strata.tritest are computed: null (the default) is the C++
+  // reference (pipeline_reference.h). The backend is not owned and must outlive the hook.
+  void set_backend(FusedPipelineBackend* backend) { backend_ = backend; }
 
  private:
   enum class Mode { kGeneral, kBox, kTriangle };
@@ -47,6 +51,7 @@ class FunctionalStrataHook : public StrataHook {
   strata_pipe_box box_{};
   strata_pipe_triangle triangle_{};
   TriangleTestResult last_triangle_{};
+  FusedPipelineBackend* backend_ = nullptr;
   std::map<uint32_t, std::vector<StreamRay>> buffers_;  // treelet -> LIFO
   std::size_t rays_queued_ = 0;
   uint32_t current_treelet_ = STRATA_NO_TREELET;

@@ -1,14 +1,16 @@
-# strata_verilate(<target> PREFIX <V...> TOP <module> SOURCES <.sv...> [SYSTEMC] [SHARDS <n>]
+# strata_verilate(<target> PREFIX <V...> TOP <module> SOURCES <.sv...> [SYSTEMC] [TRACE] [SHARDS <n>]
 #                 [VERILATOR_ARGS ...])
 # Verilates at build time (not at configure time, unlike Verilator's own verilate()): a custom
 # command runs rtl/cmake/verilate_step.cmake when a source changes, and <target> compiles the
 # fixed shard files it writes. So an RTL edit that changes the set of files Verilator writes
 # rebuilds correctly. The verilated C++ is compiled with STRATA_VERILATED_OPT (see
-# rtl/CMakeLists.txt); <target> also gets Verilator's runtime and include directories.
+# rtl/CMakeLists.txt); <target> also gets Verilator's runtime and include directories. TRACE
+# verilates with --trace (VCD of the internal signals; the runtime then includes the VCD writer):
+# every model of one <target> must agree on it, as they share its runtime.
 set(STRATA_VERILATE_STEP ${CMAKE_CURRENT_LIST_DIR}/verilate_step.cmake)
 
 function(strata_verilate target)
-  cmake_parse_arguments(V "SYSTEMC" "PREFIX;TOP;SHARDS" "SOURCES;VERILATOR_ARGS" ${ARGN})
+  cmake_parse_arguments(V "SYSTEMC;TRACE" "PREFIX;TOP;SHARDS" "SOURCES;VERILATOR_ARGS" ${ARGN})
   if(NOT V_SHARDS)
     set(V_SHARDS 1)
   endif()
@@ -19,6 +21,12 @@ function(strata_verilate target)
     set(mode --sc)
   else()
     set(mode --cc)
+  endif()
+  if(V_TRACE)
+    set(trace 1)
+    list(APPEND mode --trace)
+  else()
+    set(trace 0)
   endif()
   set(command ${VERILATOR_BIN} ${mode} --prefix ${V_PREFIX} --top-module ${V_TOP} ${V_VERILATOR_ARGS} ${V_SOURCES})
   # Rewritten only when the command changes, so a reconfigure does not re-verilate.
@@ -32,7 +40,7 @@ function(strata_verilate target)
   add_custom_command(
     OUTPUT ${shards} ${mdir}/${V_PREFIX}.h
     COMMAND ${CMAKE_COMMAND} -DARGS_FILE=${base}/args.cmake -DMDIR=${mdir} -DPREFIX=${V_PREFIX}
-            -DSHARD_DIR=${shard_dir} -DSHARDS=${V_SHARDS} -P ${STRATA_VERILATE_STEP}
+            -DSHARD_DIR=${shard_dir} -DSHARDS=${V_SHARDS} -DTRACE=${trace} -P ${STRATA_VERILATE_STEP}
     DEPENDS ${V_SOURCES} ${VERILATOR_BIN} ${base}/args.cmake ${STRATA_VERILATE_STEP}
     COMMENT "Verilating ${V_TOP} (${V_PREFIX})"
     VERBATIM)
@@ -42,9 +50,12 @@ function(strata_verilate target)
   get_target_property(has_runtime ${target} STRATA_VERILATED_RUNTIME)
   if(NOT has_runtime)
     set_target_properties(${target} PROPERTIES STRATA_VERILATED_RUNTIME ON)
-    target_sources(${target} PRIVATE ${VERILATOR_ROOT}/include/verilated.cpp ${VERILATOR_ROOT}/include/verilated_threads.cpp)
-    set_source_files_properties(${VERILATOR_ROOT}/include/verilated.cpp ${VERILATOR_ROOT}/include/verilated_threads.cpp PROPERTIES
-                                COMPILE_OPTIONS "${STRATA_VERILATED_OPT}")
+    set(runtime ${VERILATOR_ROOT}/include/verilated.cpp ${VERILATOR_ROOT}/include/verilated_threads.cpp)
+    if(V_TRACE)
+      list(APPEND runtime ${VERILATOR_ROOT}/include/verilated_vcd_c.cpp)
+    endif()
+    target_sources(${target} PRIVATE ${runtime})
+    set_source_files_properties(${runtime} PROPERTIES COMPILE_OPTIONS "${STRATA_VERILATED_OPT}")
     # Verilator's headers are not held to our warning flags.
     target_include_directories(${target} SYSTEM PUBLIC ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
     if(V_SYSTEMC)
@@ -52,7 +63,8 @@ function(strata_verilate target)
     else()
       set(sc 0)
     endif()
-    target_compile_definitions(${target} PRIVATE VM_COVERAGE=0 VM_SC=${sc} VM_TRACE=0 VM_TRACE_FST=0 VM_TRACE_VCD=0)
+    target_compile_definitions(${target} PRIVATE VM_COVERAGE=0 VM_SC=${sc} VM_TRACE=${trace} VM_TRACE_FST=0
+                               VM_TRACE_VCD=${trace})
     target_link_libraries(${target} PUBLIC Threads::Threads)
   endif()
 endfunction()

@@ -1,7 +1,8 @@
 # Build-time verilation step (cmake -P), run by strata_verilate() (rtl/cmake/StrataVerilate.cmake)
 # whenever one of the RTL sources changes. Inputs (-D): ARGS_FILE (sets VERILATOR_COMMAND, the
 # verilator command line without --Mdir), MDIR (Verilator's output folder, emptied first so no
-# stale generated file survives), PREFIX, SHARD_DIR, SHARDS (number of shard files).
+# stale generated file survives), PREFIX, SHARD_DIR, SHARDS (number of shard files), TRACE (1:
+# verilated with --trace, so the runtime includes the VCD writer).
 #
 # The list of C++ files Verilator writes depends on the design (it splits its output by size),
 # so the build cannot name them at configure time. It compiles a fixed set of shard files
@@ -9,7 +10,7 @@
 # (balanced by size), as Verilator's own make flow does for its __ALL.cpp. Verilator's runtime
 # (verilated.cpp, verilated_threads.cpp) is compiled by the library itself; this step checks
 # that the design needs nothing else.
-foreach(var ARGS_FILE MDIR PREFIX SHARD_DIR SHARDS)
+foreach(var ARGS_FILE MDIR PREFIX SHARD_DIR SHARDS TRACE)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "verilate_step.cmake: -D${var}=... missing")
   endif()
@@ -27,7 +28,13 @@ endif()
 
 include(${MDIR}/${PREFIX}.cmake)
 set(expected_global "${VERILATOR_ROOT}/include/verilated.cpp" "${VERILATOR_ROOT}/include/verilated_threads.cpp")
-if(NOT "${${PREFIX}_GLOBAL}" STREQUAL "${expected_global}")
+if(TRACE)
+  list(APPEND expected_global "${VERILATOR_ROOT}/include/verilated_vcd_c.cpp")
+endif()
+set(asked_global ${${PREFIX}_GLOBAL})
+list(SORT asked_global)
+list(SORT expected_global)
+if(NOT "${asked_global}" STREQUAL "${expected_global}")
   message(FATAL_ERROR "${PREFIX}: Verilator asks for runtime files ${${PREFIX}_GLOBAL}; "
                       "rtl/cmake/StrataVerilate.cmake compiles only ${expected_global}")
 endif()

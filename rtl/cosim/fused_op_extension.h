@@ -2,43 +2,17 @@
 // (rtl/cosim/pipeline_transactor.h): the operands of a box test or a triangle test, the
 // results the verilated pipeline produced, and the timing the transactor observed at the
 // pipeline's handshake. The payload's data pointer is not used: everything is in this
-// extension (tlm_generic_payload::set_extension, command TLM_IGNORE_COMMAND).
+// extension (tlm_generic_payload::set_extension, command TLM_IGNORE_COMMAND). The zero-time
+// transactor (zero_time_transactor.h) takes the same transactions.
 #pragma once
 
 #include <cstdint>
 
 #include <tlm>
 
-#include "firmware/common/intersect.h"
+#include "rtl/cosim/fused_op.h"
 
 namespace strata::rtl {
-
-enum class FusedOpKind : uint8_t { kBox, kTriangle };
-
-// The box pipeline's operands: one box against one ray (intersect_box's arguments).
-struct BoxOperands {
-  float bmin[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};
-  BoxRay ray{};
-};
-
-// out_hit = intersect_box, out_overlap = intersect_box_valid_ray, t_entry = the t_near both
-// write (on a hit and on a miss).
-struct BoxResult {
-  bool hit = false, overlap = false;
-  float t_entry = 0.0f;
-};
-
-// The triangle pipeline's operands (triangle_hit_test's arguments).
-struct TriangleOperands {
-  Vec3f v0{}, v1{}, v2{}, origin{}, dir{};
-};
-
-// out_hit = triangle_hit_test, partial = the TrianglePartial it writes (presented on a miss
-// too); exact: the test took the exact edge fallback (2 cycles longer, docs/rtl-cosim.md).
-struct TriangleResult {
-  bool hit = false, exact = false;
-  TrianglePartial partial{};
-};
 
 class FusedOpExtension : public tlm::tlm_extension<FusedOpExtension> {
  public:

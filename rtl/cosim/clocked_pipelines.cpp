@@ -1,0 +1,197 @@
+// The verilated pipelines clocked by hand: see clocked_pipelines.h.
+#include "rtl/cosim/clocked_pipelines.h"
+
+#include <cstring>
+#include <stdexcept>
+
+#include "Vbox_pipeline_cc.h"
+#include "Vtriangle_pipeline_cc.h"
+#include "verilated.h"
+#include "verilated_vcd_c.h"
+
+namespace strata::rtl {
+namespace {
+
+uint32_t bits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+float from_bits(uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
+float lane_float(uint64_t v, int lane) { return from_bits(static_cast<uint32_t>(v >> (32 * lane))); }
+bool lane_bit(uint32_t v, int lane) { return (v >> lane & 1u) != 0; }
+uint64_t on_lane(float f, int lane) { return static_cast<uint64_t>(bits(f)) << (32 * lane); }
+
+// The longest latency is 33 cycles; a pipeline silent for this long never answers.
+constexpr uint64_t kMaxCyclesPerOperation = 1000;
+
+}  // namespace
+
+struct ClockedPipelines::Models {
+  // One context per instance: no state shared with any other model in the process.
+  VerilatedContext context;
+  std::unique_ptr<Vbox_pipeline_cc> box;
+  std::unique_ptr<Vtriangle_pipeline_cc> triangle;
+  std::unique_ptr<VerilatedVcdC> vcd;
+};
+
+ClockedPipelines::ClockedPipelines() : m_(std::make_unique<Models>()) {
+  // Whether a run traces is decided later, but the models must be built able to (it keeps
+  // signals Verilator would otherwise optimise away); it costs nothing until a VCD is open.
+  m_->context.traceEverOn(true);
+  m_->context.timeprecision(-12);  // the VCD's time unit, 1 ps
+  m_->box = std::make_unique<Vbox_pipeline_cc>(&m_->context, "box_pipeline");
+  m_->triangle = std::make_unique<Vtriangle_pipeline_cc>(&m_->context, "triangle_pipeline");
+  Vbox_pipeline_cc& b = *m_->box;
+  Vtriangle_pipeline_cc& t = *m_->triangle;
+  // Synchronous reset, as PipelineTransactor applies it: high for the first two edges.
+  b.rst = 1;
+  t.rst = 1;
+  b.out_ready = 1;
+  t.out_ready = (1u << kTriangleLanes) - 1;
+  for (uint64_t i = 0; i < kResetCycles; ++i) {
+    clock(b, box_cycle_);
+    clock(t, triangle_cycle_);
+  }
+  b.rst = 0;
+  t.rst = 0;
+  b.eval();
+  t.eval();
+}
+
+ClockedPipelines::~ClockedPipelines() {
+  if (m_->vcd) m_->vcd->close();
+  m_->box->final();
+  m_->triangle->final();
+}
+
+void ClockedPipelines::open_vcd(const std::string& path) {
+  m_->vcd = std::make_unique<VerilatedVcdC>();
+  m_->box->trace(m_->vcd.get(), 99);
+  m_->triangle->trace(m_->vcd.get(), 99);
+  m_->vcd->open(path.c_str());
+  if (!m_->vcd->isOpen()) throw std::runtime_error(path + ": cannot write the RTL pipelines' VCD");
+}
+
+void ClockedPipelines::trace_from(uint64_t time_ps) {
+  tracing_ = m_->vcd != nullptr;
+  if (time_ps > trace_time_) trace_time_ = time_ps;
+}
+
+void ClockedPipelines::dump() {
+  if (!tracing_) return;
+  m_->vcd->dump(trace_time_);
+  ++trace_time_;
+}
+
+template <class Model>
+uint64_t ClockedPipelines::clock(Model& model, uint64_t& cycle) {
+  model.clk = 1;
+  model.eval();
+  ++cycle;
+  dump();
+  model.clk = 0;
+  model.eval();
+  dump();
+  return cycle;
+}
+
+BoxResult ClockedPipelines::box(const BoxOperands& in, OpTiming* timing) {
+  Vbox_pipeline_cc& m = *m_->box;
+  m.bmin_x = bits(in.bmin[0]);
+  m.bmin_y = bits(in.bmin[1]);
+  m.bmin_z = bits(in.bmin[2]);
+  m.bmax_x = bits(in.bmax[0]);
+  m.bmax_y = bits(in.bmax[1]);
+  m.bmax_z = bits(in.bmax[2]);
+  m.origin_x = bits(in.ray.origin.x);
+  m.origin_y = bits(in.ray.origin.y);
+  m.origin_z = bits(in.ray.origin.z);
+  m.inv_dir_x = bits(in.ray.inv_dir.x);
+  m.inv_dir_y = bits(in.ray.inv_dir.y);
+  m.inv_dir_z = bits(in.ray.inv_dir.z);
+  m.tmin = bits(in.ray.tmin);
+  m.tmax = bits(in.ray.tmax);
+  m.in_valid = 1;
+  m.eval();  // in_ready follows the pins combinationally
+  BoxResult result;
+  bool accepted = false;
+  for (uint64_t n = 0; n < kMaxCyclesPerOperation; ++n) {
+    // What the coming edge sees: the pins as they are now.
+    const bool accept = !accepted && m.in_valid && m.in_ready;
+    const bool leave = accepted && m.out_valid && m.out_ready;
+    if (leave) result = {m.out_hit != 0, m.out_overlap != 0, from_bits(m.out_t_entry)};
+    const uint64_t edge = clock(m, box_cycle_);
+    if (leave) {
+      timing->done_cycle = edge;
+      timing->latency_cycles = static_cast<uint32_t>(edge - timing->accept_cycle);
+      timing->lane = 0;
+      return result;
+    }
+    if (accept) {
+      accepted = true;
+      timing->accept_cycle = edge;
+      m.in_valid = 0;
+      m.eval();
+    }
+  }
+  throw std::runtime_error("the RTL box pipeline gave no result within " + std::to_string(kMaxCyclesPerOperation) +
+                           " cycles");
+}
+
+TriangleResult ClockedPipelines::triangle(const TriangleOperands& in, OpTiming* timing) {
+  Vtriangle_pipeline_cc& m = *m_->triangle;
+  const int lane = next_lane_;
+  next_lane_ = (next_lane_ + 1) % kTriangleLanes;
+  // The other lane's operand words are zero: its in_valid is low.
+  m.v0_x = on_lane(in.v0.x, lane);
+  m.v0_y = on_lane(in.v0.y, lane);
+  m.v0_z = on_lane(in.v0.z, lane);
+  m.v1_x = on_lane(in.v1.x, lane);
+  m.v1_y = on_lane(in.v1.y, lane);
+  m.v1_z = on_lane(in.v1.z, lane);
+  m.v2_x = on_lane(in.v2.x, lane);
+  m.v2_y = on_lane(in.v2.y, lane);
+  m.v2_z = on_lane(in.v2.z, lane);
+  m.origin_x = on_lane(in.origin.x, lane);
+  m.origin_y = on_lane(in.origin.y, lane);
+  m.origin_z = on_lane(in.origin.z, lane);
+  m.dir_x = on_lane(in.dir.x, lane);
+  m.dir_y = on_lane(in.dir.y, lane);
+  m.dir_z = on_lane(in.dir.z, lane);
+  m.in_valid = static_cast<uint8_t>(1u << lane);
+  m.eval();
+  TriangleResult result;
+  bool accepted = false;
+  for (uint64_t n = 0; n < kMaxCyclesPerOperation; ++n) {
+    const bool accept = !accepted && lane_bit(m.in_valid, lane) && lane_bit(m.in_ready, lane);
+    const bool leave = accepted && lane_bit(m.out_valid, lane) && lane_bit(m.out_ready, lane);
+    if (leave) {
+      result.hit = lane_bit(m.out_hit, lane);
+      result.exact = lane_bit(m.out_exact, lane);
+      result.partial = {lane_float(m.out_e0, lane), lane_float(m.out_e1, lane), lane_float(m.out_e2, lane),
+                        lane_float(m.out_t_num, lane), lane_float(m.out_t_den, lane)};
+    }
+    const uint64_t edge = clock(m, triangle_cycle_);
+    if (leave) {
+      timing->done_cycle = edge;
+      timing->latency_cycles = static_cast<uint32_t>(edge - timing->accept_cycle);
+      timing->lane = static_cast<uint32_t>(lane);
+      return result;
+    }
+    if (accept) {
+      accepted = true;
+      timing->accept_cycle = edge;
+      m.in_valid = 0;
+      m.eval();
+    }
+  }
+  throw std::runtime_error("the RTL triangle pipeline gave no result within " +
+                           std::to_string(kMaxCyclesPerOperation) + " cycles");
+}
+
+}  // namespace strata::rtl

@@ -1,0 +1,47 @@
+#include "sim/pipeline_backend.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#if STRATA_HAVE_RTL
+#include "rtl/cosim/rtl_fused_backend.h"
+#endif
+
+namespace strata::sim {
+
+std::string rtl_vcd_path(const std::string& base, uint32_t tm) {
+  return base + ".rtl_tm" + std::to_string(tm) + ".vcd";
+}
+
+#if STRATA_HAVE_RTL
+
+chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, const RtlVcdOptions& vcd) {
+  rtl::RtlBackendConfig base;
+  base.box_latency = config.tm.pipelines.box.latency;
+  base.triangle_latency = config.tm.pipelines.triangle.latency;
+  base.vcd_start = vcd.start;
+  base.vcd_end = vcd.end;
+  // The chip's VCD counts in ns; a chip cycle lasts 1 / clock_ghz of them.
+  base.ps_per_cycle = std::max<uint64_t>(1, static_cast<uint64_t>(std::llround(1000.0 / config.clock_ghz)));
+  const std::string vcd_base = vcd.base;
+  return [base, vcd_base](const chip::FusedBackendSetup& setup) -> std::unique_ptr<iss::FusedPipelineBackend> {
+    rtl::RtlBackendConfig c = base;
+    c.cycle = setup.cycle;
+    if (!vcd_base.empty()) c.vcd_path = rtl_vcd_path(vcd_base, setup.tm);
+    return std::make_unique<rtl::RtlFusedBackend>("rtl_pipelines", std::move(c));
+  };
+}
+
+#else
+
+chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig&, const RtlVcdOptions&) {
+  throw chip::ConfigError(
+      "tm.pipeline_impl: rtl is not available: this strata-sim was built with -DSTRATA_RTL=OFF (no verilated "
+      "pipelines); rebuild with -DSTRATA_RTL=ON (needs Verilator, scripts/install-deps) or use "
+      "tm.pipeline_impl=model");
+}
+
+#endif
+
+}  // namespace strata::sim
