@@ -15,7 +15,10 @@
 // Each instruction is first executed functionally (the hart; loads and stores go to the
 // sparse backing store), then timed: its fetch (I-cache, on a change of cache line), its
 // operands (scoreboard), its unit (XU crossbar) or its memory access (L1 socket, the TP's
-// local stack memory, the stream memory, or the global registers).
+// local stack memory, the stream memory, or the global registers). The fused box and triangle
+// tests' values come from the C++ pipeline model, or, for a TM that tm.pipeline_impl=rtl
+// selects, from a backend the environment's factory makes (the verilated RTL); their timing is
+// the XU crossbar's either way.
 #pragma once
 
 #include <array>
