@@ -161,6 +161,62 @@ inline float component(Vec3f v, int axis) { return axis == 0 ? v.x : (axis == 1 
 
 constexpr float kMinNormal = 0x1p-126f;
 
+// One vertex relative to the ray origin, projected along d (triangle_hit_test, step 2), with
+// depth_mag = sum of |a[i]*d[i]|, from the products the depth uses: it bounds the depth's
+// rounding error.
+struct Projected {
+  float x, y, depth, depth_mag;
+};
+
+inline Projected project(Vec3f a, int kx, int ky, int kz, Vec3f d) {
+  const float dx = component(d, kx);
+  const float dy = component(d, ky);
+  const float dz = component(d, kz);
+  const float sx = a.x * d.x;
+  const float sy = a.y * d.y;
+  const float sz = a.z * d.z;
+  return {dz * component(a, kx) - dx * component(a, kz), dz * component(a, ky) - dy * component(a, kz),
+          (sx + sy) + sz,  // dot(a, d), in vec3.h's order
+          (abs_f(sx) + abs_f(sy)) + abs_f(sz)};
+}
+
+// gamma(5) = 5u / (1 - 5u), u = 2^-24, rounded up: the relative error bound of a depth
+// (the translation v - origin, three products, two sums; Higham).
+constexpr float kDepthError = 0x1.400008p-22f;
+// Shewchuk's orient3d filter bound, (7 + 56u) u, rounded up to 8u: the computed orientation
+// below is within kOrientError * permanent of the exact one, translation included.
+constexpr float kOrientError = 0x1p-21f;
+
+// Whether the exact t of a hit is positive, not only the rounded one. The rounded t_num can
+// have the sign of t_den when the exact t is 0 or negative: a ray whose origin lies in the
+// triangle's plane (exact t = 0; tmin = 0 is open) would hit at t of about 1e-11 to 1e-8.
+// (pbrt-v4 bounds t's rounding error for the same reason; docs/numerics.md, "Sign of t".)
+//  - Tight case: every vertex lies farther along d than its depth's rounding error. Then the
+//    exact depth of every point of the triangle is positive, so is t: far triangles and
+//    grazing rays decide here, at the cost of three products.
+//  - Otherwise the triangle straddles the origin's depth, and the sign of t comes from the
+//    plane: t = orient / dot(n, d) with n = cross(v1 - v0, v2 - v0), orient = dot(n, a) =
+//    dot(a, cross(b, c)) (a, b, c the vertices relative to the origin), and dot(n, d) has
+//    det's sign. orient is taken only when it is farther from zero than Shewchuk's bound, so
+//    an origin within rounding of the plane never hits. Unlike a bound on t_num, this does not
+//    grow with the projection's cancellation, so an edge-on neighbour at a shared edge still
+//    hits (NumericsTriangle.SharedEdgeNeverLetsARayThrough).
+// A NaN anywhere fails both tests.
+inline bool t_exactly_positive(Vec3f a, Vec3f b, Vec3f c, const Projected& pa, const Projected& pb,
+                               const Projected& pc, float t_den) {
+  if (pa.depth > kDepthError * pa.depth_mag && pb.depth > kDepthError * pb.depth_mag &&
+      pc.depth > kDepthError * pc.depth_mag)
+    return true;
+  const float bxcy = b.x * c.y, cxby = c.x * b.y;
+  const float cxay = c.x * a.y, axcy = a.x * c.y;
+  const float axby = a.x * b.y, bxay = b.x * a.y;
+  const float orient = (a.z * (bxcy - cxby) + b.z * (cxay - axcy)) + c.z * (axby - bxay);
+  const float permanent = ((abs_f(bxcy) + abs_f(cxby)) * abs_f(a.z) + (abs_f(cxay) + abs_f(axcy)) * abs_f(b.z)) +
+                          (abs_f(axby) + abs_f(bxay)) * abs_f(c.z);
+  const float bound = kOrientError * permanent;
+  return t_den > 0.0f ? orient > bound : orient < -bound;
+}
+
 }  // namespace detail
 
 // Watertight ray-triangle test without a division: the Plücker edge terms evaluated in the
@@ -204,23 +260,17 @@ inline bool triangle_hit_test(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f origin, Vec3f 
   float scale, unscale;
   detail::direction_scale(detail::abs_f(dkz_raw), &scale, &unscale);
   const Vec3f d = dir * scale;  // exact unless a component drops below 2^-126
-  const float dx = detail::component(d, kx);
-  const float dy = detail::component(d, ky);
-  const float dz = detail::component(d, kz);
 
   const Vec3f a = v0 - origin;
   const Vec3f b = v1 - origin;
   const Vec3f c = v2 - origin;
-  const float ax = dz * detail::component(a, kx) - dx * detail::component(a, kz);
-  const float ay = dz * detail::component(a, ky) - dy * detail::component(a, kz);
-  const float bx = dz * detail::component(b, kx) - dx * detail::component(b, kz);
-  const float by = dz * detail::component(b, ky) - dy * detail::component(b, kz);
-  const float cx = dz * detail::component(c, kx) - dx * detail::component(c, kz);
-  const float cy = dz * detail::component(c, ky) - dy * detail::component(c, kz);
+  const detail::Projected pa = detail::project(a, kx, ky, kz, d);
+  const detail::Projected pb = detail::project(b, kx, ky, kz, d);
+  const detail::Projected pc = detail::project(c, kx, ky, kz, d);
 
-  const float e0 = detail::edge_function(bx, by, cx, cy);  // edge v1 -> v2, weights v0
-  const float e1 = detail::edge_function(cx, cy, ax, ay);  // edge v2 -> v0, weights v1
-  const float e2 = detail::edge_function(ax, ay, bx, by);  // edge v0 -> v1, weights v2
+  const float e0 = detail::edge_function(pb.x, pb.y, pc.x, pc.y);  // edge v1 -> v2, weights v0
+  const float e1 = detail::edge_function(pc.x, pc.y, pa.x, pa.y);  // edge v2 -> v0, weights v1
+  const float e2 = detail::edge_function(pa.x, pa.y, pb.x, pb.y);  // edge v0 -> v1, weights v2
   const bool all_nonneg = e0 >= 0.0f && e1 >= 0.0f && e2 >= 0.0f;
   const bool all_nonpos = e0 <= 0.0f && e1 <= 0.0f && e2 <= 0.0f;
   if (!(all_nonneg || all_nonpos)) return false;  // NaN terms miss here
@@ -231,13 +281,15 @@ inline bool triangle_hit_test(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f origin, Vec3f 
   // The hit point relative to the origin is (e0 a + e1 b + e2 c) / det, and t is its
   // projection on d divided by |d|^2: interpolating projections keeps t accurate. The
   // factor 2^k turns t along d back into t along dir (exact).
-  const float t_num = (e0 * dot(a, d) + e1 * dot(b, d)) + e2 * dot(c, d);
+  const float t_num = (e0 * pa.depth + e1 * pb.depth) + e2 * pc.depth;
   const float t_den = (det * dot(d, d)) * unscale;
   if (!(is_finite_float(t_num) && is_finite_float(t_den) &&
         detail::abs_f(t_den) >= detail::kMinNormal))
     return false;
-  // In front of the origin: t_num and t_den of one sign (t_den is non-zero here).
+  // In front of the origin: t_num and t_den of one sign (t_den is non-zero here), and the
+  // exact t positive too, not only the rounded one.
   if (!(t_den > 0.0f ? t_num > 0.0f : t_num < 0.0f)) return false;
+  if (!detail::t_exactly_positive(a, b, c, pa, pb, pc, t_den)) return false;
   out->e0 = e0;
   out->e1 = e1;
   out->e2 = e2;

@@ -12,7 +12,6 @@ std::string hex(uint32_t v) {
 }
 
 constexpr uint64_t kDataAlignment = 1u << 20;
-constexpr uint64_t kMaxCodeBytes = uint64_t{64} << 20;
 
 // [segments][stack][data], the stack top 16-byte aligned, the data 1 MiB aligned.
 FlatMemory build_memory(const ElfImage& elf, uint32_t stack_bytes, uint32_t data_bytes,

@@ -14,6 +14,9 @@
 namespace strata::iss {
 
 constexpr uint32_t kDefaultStackBytes = 256 * 1024;
+// The largest span of executable segments: every code word is predecoded when the program is
+// made, and real firmware is a few KiB.
+constexpr uint64_t kMaxCodeBytes = uint64_t{64} << 20;
 
 struct Program {
   ElfImage elf;

@@ -24,6 +24,10 @@ OUTPUTS = ("triangle_datapath.sv", "triangle_datapath_pkg.sv")
 # test compares the measured latency with the config, so a change there shows up as a failure).
 FAST_TAP = 31
 
+# detail::kDepthError and detail::kOrientError of intersect.h, bit for bit.
+DEPTH_ERROR = float.fromhex("0x1.400008p-22")
+ORIENT_ERROR = float.fromhex("0x1p-21")
+
 
 def f32(x):
     return "32'h%08X" % struct.unpack("<I", struct.pack("<f", x))[0]
@@ -82,6 +86,10 @@ class Graph:
 
     def sub(self, name, a, b):
         return self._fp("fp32_add", name, a, b, 1)
+
+    def abs(self, name, a):
+        """detail::abs_f: sign logic on a compare, no arithmetic unit (0 cycles)."""
+        return self.comb(name, 32, "abs_f({0})", [a], compares=1)
 
     def comb(self, name, width, expr, args, reg=False, compares=0):
         """expr with {0}, {1}, ... for the arguments; reg puts a register after it (1 cycle)."""
@@ -201,11 +209,37 @@ def build():
     needs_exact = g.comb("needs_exact", 1, "{0} | {1} | {2}", zero)
 
     # Dot products with d (shared by both back ends).
-    def dot(name, a, b):
-        return g.add(name, g.add(name + "_xy", g.mul(name + "_x", a[0], b[0]), g.mul(name + "_y", a[1], b[1])),
-                     g.mul(name + "_z", a[2], b[2]))
-    dots = [dot("dot_" + n, rel[i], d) for i, n in enumerate("abc")]
+    def dot(name, a, b, with_mag=False):
+        p = [g.mul(name + "_" + c, a[i], b[i]) for i, c in enumerate("xyz")]
+        value = g.add(name, g.add(name + "_xy", p[0], p[1]), p[2])
+        if not with_mag:
+            return value
+        m = [g.abs(name + "_" + c + "_abs", p[i]) for i, c in enumerate("xyz")]
+        return value, g.add(name + "_mag", g.add(name + "_mag_xy", m[0], m[1]), m[2])
+    dots, depth_mags = zip(*[dot("dot_" + n, rel[i], d, True) for i, n in enumerate("abc")])
     dot_dd = dot("dot_dd", d, d)
+
+    # detail::t_exactly_positive. The tight case: every vertex beyond its depth's rounding error.
+    ahead = [g.comb("ahead_" + n, 1, "lt({1}, {0})", [dots[i], g.mul("depth_err_" + n, g.const(DEPTH_ERROR), depth_mags[i])],
+                    compares=1) for i, n in enumerate("abc")]
+    all_ahead = g.comb("all_ahead", 1, "{0} & {1} & {2}", ahead)
+    # Otherwise: the orientation of the origin against the plane, dot(a, cross(b, c)), with
+    # Shewchuk's filter bound kOrientError * permanent. Neither depends on the edge terms, so
+    # both back ends share them.
+    a, b, c = rel
+    bxcy, cxby = g.mul("o_bxcy", b[0], c[1]), g.mul("o_cxby", c[0], b[1])
+    cxay, axcy = g.mul("o_cxay", c[0], a[1]), g.mul("o_axcy", a[0], c[1])
+    axby, bxay = g.mul("o_axby", a[0], b[1]), g.mul("o_bxay", b[0], a[1])
+    orient = g.add("orient", g.add("orient_ab", g.mul("orient_a", a[2], g.sub("o_bc", bxcy, cxby)),
+                                   g.mul("orient_b", b[2], g.sub("o_ca", cxay, axcy))),
+                   g.mul("orient_c", c[2], g.sub("o_ab", axby, bxay)))
+    ab = lambda name, x: g.abs(name + "_abs", x)
+    permanent = g.add("permanent",
+                      g.add("permanent_ab",
+                            g.mul("permanent_a", g.add("p_bc", ab("o_bxcy", bxcy), ab("o_cxby", cxby)), ab("a_z", a[2])),
+                            g.mul("permanent_b", g.add("p_ca", ab("o_cxay", cxay), ab("o_axcy", axcy)), ab("b_z", b[2]))),
+                      g.mul("permanent_c", g.add("p_ab", ab("o_axby", axby), ab("o_bxay", bxay)), ab("c_z", c[2])))
+    orient_bound = g.mul("orient_bound", g.const(ORIENT_ERROR), permanent)
 
     # 4. The hit rule and t_num, t_den: once on the fast terms, once on the exact ones.
     def back_end(tag, e):
@@ -214,8 +248,8 @@ def build():
                                             g.mul("t_num1_" + tag, e[1], dots[1])),
                       g.mul("t_num2_" + tag, e[2], dots[2]))
         t_den = g.mul("t_den_" + tag, g.mul("t_den_dd_" + tag, det, dot_dd), unscale)
-        hit = g.comb("hit_" + tag, 1, "hit_rule({0}, {1}, {2}, {3}, {4}, {5})",
-                     e + [det, t_num, t_den], reg=True, compares=13)
+        hit = g.comb("hit_" + tag, 1, "hit_rule({0}, {1}, {2}, {3}, {4}, {5}, {6}, {7}, {8})",
+                     e + [det, t_num, t_den, all_ahead, orient, orient_bound], reg=True, compares=15)
         return hit, e, t_num, t_den
 
     outs_fast = back_end("fast", fast)

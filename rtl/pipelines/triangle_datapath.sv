@@ -231,24 +231,78 @@ module triangle_datapath (
   logic needs_exact;
   logic [31:0] dot_a_x;
   logic [31:0] dot_a_y;
-  logic [31:0] dot_a_xy;
   logic [31:0] dot_a_z;
+  logic [31:0] dot_a_xy;
   logic [31:0] dot_a;
+  logic [31:0] dot_a_x_abs;
+  logic [31:0] dot_a_y_abs;
+  logic [31:0] dot_a_z_abs;
+  logic [31:0] dot_a_mag_xy;
+  logic [31:0] dot_a_mag;
   logic [31:0] dot_b_x;
   logic [31:0] dot_b_y;
-  logic [31:0] dot_b_xy;
   logic [31:0] dot_b_z;
+  logic [31:0] dot_b_xy;
   logic [31:0] dot_b;
+  logic [31:0] dot_b_x_abs;
+  logic [31:0] dot_b_y_abs;
+  logic [31:0] dot_b_z_abs;
+  logic [31:0] dot_b_mag_xy;
+  logic [31:0] dot_b_mag;
   logic [31:0] dot_c_x;
   logic [31:0] dot_c_y;
-  logic [31:0] dot_c_xy;
   logic [31:0] dot_c_z;
+  logic [31:0] dot_c_xy;
   logic [31:0] dot_c;
+  logic [31:0] dot_c_x_abs;
+  logic [31:0] dot_c_y_abs;
+  logic [31:0] dot_c_z_abs;
+  logic [31:0] dot_c_mag_xy;
+  logic [31:0] dot_c_mag;
   logic [31:0] dot_dd_x;
   logic [31:0] dot_dd_y;
-  logic [31:0] dot_dd_xy;
   logic [31:0] dot_dd_z;
+  logic [31:0] dot_dd_xy;
   logic [31:0] dot_dd;
+  logic [31:0] depth_err_a;
+  logic ahead_a;
+  logic [31:0] depth_err_b;
+  logic ahead_b;
+  logic [31:0] depth_err_c;
+  logic ahead_c;
+  logic all_ahead;
+  logic [31:0] o_bxcy;
+  logic [31:0] o_cxby;
+  logic [31:0] o_cxay;
+  logic [31:0] o_axcy;
+  logic [31:0] o_axby;
+  logic [31:0] o_bxay;
+  logic [31:0] o_bc;
+  logic [31:0] orient_a;
+  logic [31:0] o_ca;
+  logic [31:0] orient_b;
+  logic [31:0] orient_ab;
+  logic [31:0] o_ab;
+  logic [31:0] orient_c;
+  logic [31:0] orient;
+  logic [31:0] o_bxcy_abs;
+  logic [31:0] o_cxby_abs;
+  logic [31:0] p_bc;
+  logic [31:0] a_z_abs;
+  logic [31:0] permanent_a;
+  logic [31:0] o_cxay_abs;
+  logic [31:0] o_axcy_abs;
+  logic [31:0] p_ca;
+  logic [31:0] b_z_abs;
+  logic [31:0] permanent_b;
+  logic [31:0] permanent_ab;
+  logic [31:0] o_axby_abs;
+  logic [31:0] o_bxay_abs;
+  logic [31:0] p_ab;
+  logic [31:0] c_z_abs;
+  logic [31:0] permanent_c;
+  logic [31:0] permanent;
+  logic [31:0] orient_bound;
   logic [31:0] det01_fast;
   logic [31:0] det_fast;
   logic [31:0] t_num0_fast;
@@ -269,6 +323,55 @@ module triangle_datapath (
   logic [31:0] t_den_dd_exact;
   logic [31:0] t_den_exact;
   logic hit_exact;
+  logic [31:0] a_z_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      a_z_d[1] <= a_z;
+      for (int k = 2; k <= 4; k++) a_z_d[k] <= a_z_d[k-1];
+    end
+  end
+  logic [31:0] a_z_abs_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      a_z_abs_d[1] <= a_z_abs;
+      for (int k = 2; k <= 4; k++) a_z_abs_d[k] <= a_z_abs_d[k-1];
+    end
+  end
+  logic all_ahead_d[1:22];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      all_ahead_d[1] <= all_ahead;
+      for (int k = 2; k <= 22; k++) all_ahead_d[k] <= all_ahead_d[k-1];
+    end
+  end
+  logic [31:0] b_z_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      b_z_d[1] <= b_z;
+      for (int k = 2; k <= 4; k++) b_z_d[k] <= b_z_d[k-1];
+    end
+  end
+  logic [31:0] b_z_abs_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      b_z_abs_d[1] <= b_z_abs;
+      for (int k = 2; k <= 4; k++) b_z_abs_d[k] <= b_z_abs_d[k-1];
+    end
+  end
+  logic [31:0] c_z_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      c_z_d[1] <= c_z;
+      for (int k = 2; k <= 4; k++) c_z_d[k] <= c_z_d[k-1];
+    end
+  end
+  logic [31:0] c_z_abs_d[1:4];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      c_z_abs_d[1] <= c_z_abs;
+      for (int k = 2; k <= 4; k++) c_z_abs_d[k] <= c_z_abs_d[k-1];
+    end
+  end
   logic [31:0] det_exact_d[1:4];
   always_ff @(posedge clk) begin
     if (en) begin
@@ -297,6 +400,13 @@ module triangle_datapath (
       for (int k = 2; k <= 2; k++) dot_a_z_d[k] <= dot_a_z_d[k-1];
     end
   end
+  logic [31:0] dot_a_z_abs_d[1:2];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      dot_a_z_abs_d[1] <= dot_a_z_abs;
+      for (int k = 2; k <= 2; k++) dot_a_z_abs_d[k] <= dot_a_z_abs_d[k-1];
+    end
+  end
   logic [31:0] dot_b_d[1:16];
   always_ff @(posedge clk) begin
     if (en) begin
@@ -311,6 +421,13 @@ module triangle_datapath (
       for (int k = 2; k <= 2; k++) dot_b_z_d[k] <= dot_b_z_d[k-1];
     end
   end
+  logic [31:0] dot_b_z_abs_d[1:2];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      dot_b_z_abs_d[1] <= dot_b_z_abs;
+      for (int k = 2; k <= 2; k++) dot_b_z_abs_d[k] <= dot_b_z_abs_d[k-1];
+    end
+  end
   logic [31:0] dot_c_d[1:16];
   always_ff @(posedge clk) begin
     if (en) begin
@@ -323,6 +440,13 @@ module triangle_datapath (
     if (en) begin
       dot_c_z_d[1] <= dot_c_z;
       for (int k = 2; k <= 2; k++) dot_c_z_d[k] <= dot_c_z_d[k-1];
+    end
+  end
+  logic [31:0] dot_c_z_abs_d[1:2];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      dot_c_z_abs_d[1] <= dot_c_z_abs;
+      for (int k = 2; k <= 2; k++) dot_c_z_abs_d[k] <= dot_c_z_abs_d[k-1];
     end
   end
   logic [31:0] dot_dd_d[1:20];
@@ -815,6 +939,34 @@ module triangle_datapath (
       for (int k = 2; k <= 23; k++) needs_exact_d[k] <= needs_exact_d[k-1];
     end
   end
+  logic [31:0] orient_d[1:20];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      orient_d[1] <= orient;
+      for (int k = 2; k <= 20; k++) orient_d[k] <= orient_d[k-1];
+    end
+  end
+  logic [31:0] orient_bound_d[1:18];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      orient_bound_d[1] <= orient_bound;
+      for (int k = 2; k <= 18; k++) orient_bound_d[k] <= orient_bound_d[k-1];
+    end
+  end
+  logic [31:0] orient_c_d[1:2];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      orient_c_d[1] <= orient_c;
+      for (int k = 2; k <= 2; k++) orient_c_d[k] <= orient_c_d[k-1];
+    end
+  end
+  logic [31:0] permanent_c_d[1:2];
+  always_ff @(posedge clk) begin
+    if (en) begin
+      permanent_c_d[1] <= permanent_c;
+      for (int k = 2; k <= 2; k++) permanent_c_d[k] <= permanent_c_d[k-1];
+    end
+  end
   logic [31:0] t_den_exact_d[1:1];
   always_ff @(posedge clk) begin
     if (en) begin
@@ -1051,24 +1203,78 @@ module triangle_datapath (
   assign needs_exact = e0_zero | e1_zero | e2_zero;  // cycle 10
   fp32_mul u_dot_a_x (.clk, .en, .a(a_x), .b(d_x), .y(dot_a_x));  // cycles 2-4
   fp32_mul u_dot_a_y (.clk, .en, .a(a_y), .b(d_y), .y(dot_a_y));  // cycles 2-4
-  fp32_add u_dot_a_xy (.clk, .en, .a(dot_a_x), .b(dot_a_y), .sub(1'b0), .y(dot_a_xy));  // cycles 4-6
   fp32_mul u_dot_a_z (.clk, .en, .a(a_z), .b(d_z), .y(dot_a_z));  // cycles 2-4
+  fp32_add u_dot_a_xy (.clk, .en, .a(dot_a_x), .b(dot_a_y), .sub(1'b0), .y(dot_a_xy));  // cycles 4-6
   fp32_add u_dot_a (.clk, .en, .a(dot_a_xy), .b(dot_a_z_d[2]), .sub(1'b0), .y(dot_a));  // cycles 6-8
+  assign dot_a_x_abs = abs_f(dot_a_x);  // cycle 4
+  assign dot_a_y_abs = abs_f(dot_a_y);  // cycle 4
+  assign dot_a_z_abs = abs_f(dot_a_z);  // cycle 4
+  fp32_add u_dot_a_mag_xy (.clk, .en, .a(dot_a_x_abs), .b(dot_a_y_abs), .sub(1'b0), .y(dot_a_mag_xy));  // cycles 4-6
+  fp32_add u_dot_a_mag (.clk, .en, .a(dot_a_mag_xy), .b(dot_a_z_abs_d[2]), .sub(1'b0), .y(dot_a_mag));  // cycles 6-8
   fp32_mul u_dot_b_x (.clk, .en, .a(b_x), .b(d_x), .y(dot_b_x));  // cycles 2-4
   fp32_mul u_dot_b_y (.clk, .en, .a(b_y), .b(d_y), .y(dot_b_y));  // cycles 2-4
-  fp32_add u_dot_b_xy (.clk, .en, .a(dot_b_x), .b(dot_b_y), .sub(1'b0), .y(dot_b_xy));  // cycles 4-6
   fp32_mul u_dot_b_z (.clk, .en, .a(b_z), .b(d_z), .y(dot_b_z));  // cycles 2-4
+  fp32_add u_dot_b_xy (.clk, .en, .a(dot_b_x), .b(dot_b_y), .sub(1'b0), .y(dot_b_xy));  // cycles 4-6
   fp32_add u_dot_b (.clk, .en, .a(dot_b_xy), .b(dot_b_z_d[2]), .sub(1'b0), .y(dot_b));  // cycles 6-8
+  assign dot_b_x_abs = abs_f(dot_b_x);  // cycle 4
+  assign dot_b_y_abs = abs_f(dot_b_y);  // cycle 4
+  assign dot_b_z_abs = abs_f(dot_b_z);  // cycle 4
+  fp32_add u_dot_b_mag_xy (.clk, .en, .a(dot_b_x_abs), .b(dot_b_y_abs), .sub(1'b0), .y(dot_b_mag_xy));  // cycles 4-6
+  fp32_add u_dot_b_mag (.clk, .en, .a(dot_b_mag_xy), .b(dot_b_z_abs_d[2]), .sub(1'b0), .y(dot_b_mag));  // cycles 6-8
   fp32_mul u_dot_c_x (.clk, .en, .a(c_x), .b(d_x), .y(dot_c_x));  // cycles 2-4
   fp32_mul u_dot_c_y (.clk, .en, .a(c_y), .b(d_y), .y(dot_c_y));  // cycles 2-4
-  fp32_add u_dot_c_xy (.clk, .en, .a(dot_c_x), .b(dot_c_y), .sub(1'b0), .y(dot_c_xy));  // cycles 4-6
   fp32_mul u_dot_c_z (.clk, .en, .a(c_z), .b(d_z), .y(dot_c_z));  // cycles 2-4
+  fp32_add u_dot_c_xy (.clk, .en, .a(dot_c_x), .b(dot_c_y), .sub(1'b0), .y(dot_c_xy));  // cycles 4-6
   fp32_add u_dot_c (.clk, .en, .a(dot_c_xy), .b(dot_c_z_d[2]), .sub(1'b0), .y(dot_c));  // cycles 6-8
+  assign dot_c_x_abs = abs_f(dot_c_x);  // cycle 4
+  assign dot_c_y_abs = abs_f(dot_c_y);  // cycle 4
+  assign dot_c_z_abs = abs_f(dot_c_z);  // cycle 4
+  fp32_add u_dot_c_mag_xy (.clk, .en, .a(dot_c_x_abs), .b(dot_c_y_abs), .sub(1'b0), .y(dot_c_mag_xy));  // cycles 4-6
+  fp32_add u_dot_c_mag (.clk, .en, .a(dot_c_mag_xy), .b(dot_c_z_abs_d[2]), .sub(1'b0), .y(dot_c_mag));  // cycles 6-8
   fp32_mul u_dot_dd_x (.clk, .en, .a(d_x), .b(d_x), .y(dot_dd_x));  // cycles 2-4
   fp32_mul u_dot_dd_y (.clk, .en, .a(d_y), .b(d_y), .y(dot_dd_y));  // cycles 2-4
-  fp32_add u_dot_dd_xy (.clk, .en, .a(dot_dd_x), .b(dot_dd_y), .sub(1'b0), .y(dot_dd_xy));  // cycles 4-6
   fp32_mul u_dot_dd_z (.clk, .en, .a(d_z), .b(d_z), .y(dot_dd_z));  // cycles 2-4
+  fp32_add u_dot_dd_xy (.clk, .en, .a(dot_dd_x), .b(dot_dd_y), .sub(1'b0), .y(dot_dd_xy));  // cycles 4-6
   fp32_add u_dot_dd (.clk, .en, .a(dot_dd_xy), .b(dot_dd_z_d[2]), .sub(1'b0), .y(dot_dd));  // cycles 6-8
+  fp32_mul u_depth_err_a (.clk, .en, .a(32'h34A00004), .b(dot_a_mag), .y(depth_err_a));  // cycles 8-10
+  assign ahead_a = lt(depth_err_a, dot_a_d[2]);  // cycle 10
+  fp32_mul u_depth_err_b (.clk, .en, .a(32'h34A00004), .b(dot_b_mag), .y(depth_err_b));  // cycles 8-10
+  assign ahead_b = lt(depth_err_b, dot_b_d[2]);  // cycle 10
+  fp32_mul u_depth_err_c (.clk, .en, .a(32'h34A00004), .b(dot_c_mag), .y(depth_err_c));  // cycles 8-10
+  assign ahead_c = lt(depth_err_c, dot_c_d[2]);  // cycle 10
+  assign all_ahead = ahead_a & ahead_b & ahead_c;  // cycle 10
+  fp32_mul u_o_bxcy (.clk, .en, .a(b_x), .b(c_y), .y(o_bxcy));  // cycles 2-4
+  fp32_mul u_o_cxby (.clk, .en, .a(c_x), .b(b_y), .y(o_cxby));  // cycles 2-4
+  fp32_mul u_o_cxay (.clk, .en, .a(c_x), .b(a_y), .y(o_cxay));  // cycles 2-4
+  fp32_mul u_o_axcy (.clk, .en, .a(a_x), .b(c_y), .y(o_axcy));  // cycles 2-4
+  fp32_mul u_o_axby (.clk, .en, .a(a_x), .b(b_y), .y(o_axby));  // cycles 2-4
+  fp32_mul u_o_bxay (.clk, .en, .a(b_x), .b(a_y), .y(o_bxay));  // cycles 2-4
+  fp32_add u_o_bc (.clk, .en, .a(o_bxcy), .b(o_cxby), .sub(1'b1), .y(o_bc));  // cycles 4-6
+  fp32_mul u_orient_a (.clk, .en, .a(a_z_d[4]), .b(o_bc), .y(orient_a));  // cycles 6-8
+  fp32_add u_o_ca (.clk, .en, .a(o_cxay), .b(o_axcy), .sub(1'b1), .y(o_ca));  // cycles 4-6
+  fp32_mul u_orient_b (.clk, .en, .a(b_z_d[4]), .b(o_ca), .y(orient_b));  // cycles 6-8
+  fp32_add u_orient_ab (.clk, .en, .a(orient_a), .b(orient_b), .sub(1'b0), .y(orient_ab));  // cycles 8-10
+  fp32_add u_o_ab (.clk, .en, .a(o_axby), .b(o_bxay), .sub(1'b1), .y(o_ab));  // cycles 4-6
+  fp32_mul u_orient_c (.clk, .en, .a(c_z_d[4]), .b(o_ab), .y(orient_c));  // cycles 6-8
+  fp32_add u_orient (.clk, .en, .a(orient_ab), .b(orient_c_d[2]), .sub(1'b0), .y(orient));  // cycles 10-12
+  assign o_bxcy_abs = abs_f(o_bxcy);  // cycle 4
+  assign o_cxby_abs = abs_f(o_cxby);  // cycle 4
+  fp32_add u_p_bc (.clk, .en, .a(o_bxcy_abs), .b(o_cxby_abs), .sub(1'b0), .y(p_bc));  // cycles 4-6
+  assign a_z_abs = abs_f(a_z);  // cycle 2
+  fp32_mul u_permanent_a (.clk, .en, .a(p_bc), .b(a_z_abs_d[4]), .y(permanent_a));  // cycles 6-8
+  assign o_cxay_abs = abs_f(o_cxay);  // cycle 4
+  assign o_axcy_abs = abs_f(o_axcy);  // cycle 4
+  fp32_add u_p_ca (.clk, .en, .a(o_cxay_abs), .b(o_axcy_abs), .sub(1'b0), .y(p_ca));  // cycles 4-6
+  assign b_z_abs = abs_f(b_z);  // cycle 2
+  fp32_mul u_permanent_b (.clk, .en, .a(p_ca), .b(b_z_abs_d[4]), .y(permanent_b));  // cycles 6-8
+  fp32_add u_permanent_ab (.clk, .en, .a(permanent_a), .b(permanent_b), .sub(1'b0), .y(permanent_ab));  // cycles 8-10
+  assign o_axby_abs = abs_f(o_axby);  // cycle 4
+  assign o_bxay_abs = abs_f(o_bxay);  // cycle 4
+  fp32_add u_p_ab (.clk, .en, .a(o_axby_abs), .b(o_bxay_abs), .sub(1'b0), .y(p_ab));  // cycles 4-6
+  assign c_z_abs = abs_f(c_z);  // cycle 2
+  fp32_mul u_permanent_c (.clk, .en, .a(p_ab), .b(c_z_abs_d[4]), .y(permanent_c));  // cycles 6-8
+  fp32_add u_permanent (.clk, .en, .a(permanent_ab), .b(permanent_c_d[2]), .sub(1'b0), .y(permanent));  // cycles 10-12
+  fp32_mul u_orient_bound (.clk, .en, .a(32'h35000000), .b(permanent), .y(orient_bound));  // cycles 12-14
   fp32_add u_det01_fast (.clk, .en, .a(e0_fast), .b(e1_fast), .sub(1'b0), .y(det01_fast));  // cycles 10-12
   fp32_add u_det_fast (.clk, .en, .a(det01_fast), .b(e2_fast_d[2]), .sub(1'b0), .y(det_fast));  // cycles 12-14
   fp32_mul u_t_num0_fast (.clk, .en, .a(e0_fast), .b(dot_a_d[2]), .y(t_num0_fast));  // cycles 10-12
@@ -1078,7 +1284,7 @@ module triangle_datapath (
   fp32_add u_t_num_fast (.clk, .en, .a(t_num01_fast), .b(t_num2_fast_d[2]), .sub(1'b0), .y(t_num_fast));  // cycles 14-16
   fp32_mul u_t_den_dd_fast (.clk, .en, .a(det_fast), .b(dot_dd_d[6]), .y(t_den_dd_fast));  // cycles 14-16
   fp32_mul u_t_den_fast (.clk, .en, .a(t_den_dd_fast), .b(unscale_d[16]), .y(t_den_fast));  // cycles 16-18
-  always_ff @(posedge clk) if (en) hit_fast <= hit_rule(e0_fast_d[8], e1_fast_d[8], e2_fast_d[8], det_fast_d[4], t_num_fast_d[2], t_den_fast);  // cycle 18
+  always_ff @(posedge clk) if (en) hit_fast <= hit_rule(e0_fast_d[8], e1_fast_d[8], e2_fast_d[8], det_fast_d[4], t_num_fast_d[2], t_den_fast, all_ahead_d[8], orient_d[6], orient_bound_d[4]);  // cycle 18
   fp32_add u_det01_exact (.clk, .en, .a(e0_exact), .b(e1_exact), .sub(1'b0), .y(det01_exact));  // cycles 24-26
   fp32_add u_det_exact (.clk, .en, .a(det01_exact), .b(e2_exact_d[2]), .sub(1'b0), .y(det_exact));  // cycles 26-28
   fp32_mul u_t_num0_exact (.clk, .en, .a(e0_exact), .b(dot_a_d[16]), .y(t_num0_exact));  // cycles 24-26
@@ -1088,7 +1294,7 @@ module triangle_datapath (
   fp32_add u_t_num_exact (.clk, .en, .a(t_num01_exact), .b(t_num2_exact_d[2]), .sub(1'b0), .y(t_num_exact));  // cycles 28-30
   fp32_mul u_t_den_dd_exact (.clk, .en, .a(det_exact), .b(dot_dd_d[20]), .y(t_den_dd_exact));  // cycles 28-30
   fp32_mul u_t_den_exact (.clk, .en, .a(t_den_dd_exact), .b(unscale_d[30]), .y(t_den_exact));  // cycles 30-32
-  always_ff @(posedge clk) if (en) hit_exact <= hit_rule(e0_exact_d[8], e1_exact_d[8], e2_exact_d[8], det_exact_d[4], t_num_exact_d[2], t_den_exact);  // cycle 32
+  always_ff @(posedge clk) if (en) hit_exact <= hit_rule(e0_exact_d[8], e1_exact_d[8], e2_exact_d[8], det_exact_d[4], t_num_exact_d[2], t_den_exact, all_ahead_d[22], orient_d[20], orient_bound_d[18]);  // cycle 32
   assign fast_hit = hit_fast_d[12];
   assign fast_e0 = e0_fast_d[21];
   assign fast_e1 = e1_fast_d[21];

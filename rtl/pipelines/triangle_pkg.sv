@@ -56,18 +56,25 @@ package triangle_pkg;
   endfunction
 
   // The hit rule after the edge terms (triangle_hit_test): terms of one sign, det finite with
-  // |det| >= 2^-126, t_num and t_den finite, |t_den| >= 2^-126, t_num and t_den of one sign.
+  // |det| >= 2^-126, t_num and t_den finite, |t_den| >= 2^-126, t_num and t_den of one sign,
+  // and the exact t positive too (detail::t_exactly_positive): every vertex ahead beyond its
+  // depth's rounding error (all_ahead), or the origin's orientation against the plane of
+  // t_den's sign beyond its bound. The sign flip of -bound is exact, as in the C++.
   localparam logic [31:0] MIN_NORMAL = 32'h0080_0000;
   localparam logic [31:0] ZERO = 32'h0000_0000;
   function automatic logic hit_rule(input logic [31:0] e0, input logic [31:0] e1,
                                     input logic [31:0] e2, input logic [31:0] det,
-                                    input logic [31:0] t_num, input logic [31:0] t_den);
-    logic all_nonneg, all_nonpos, det_ok, t_ok, in_front;
+                                    input logic [31:0] t_num, input logic [31:0] t_den,
+                                    input logic all_ahead, input logic [31:0] orient,
+                                    input logic [31:0] orient_bound);
+    logic all_nonneg, all_nonpos, det_ok, t_ok, in_front, exactly_ahead;
     all_nonneg = le(ZERO, e0) && le(ZERO, e1) && le(ZERO, e2);
     all_nonpos = le(e0, ZERO) && le(e1, ZERO) && le(e2, ZERO);
     det_ok = le(MIN_NORMAL, abs_f(det)) && is_finite(det);
     t_ok = is_finite(t_num) && is_finite(t_den) && le(MIN_NORMAL, abs_f(t_den));
     in_front = lt(ZERO, t_den) ? lt(ZERO, t_num) : lt(t_num, ZERO);
-    return (all_nonneg || all_nonpos) && det_ok && t_ok && in_front;
+    exactly_ahead = all_ahead || (lt(ZERO, t_den) ? lt(orient_bound, orient)
+                                                  : lt(orient, {~orient_bound[31], orient_bound[30:0]}));
+    return (all_nonneg || all_nonpos) && det_ok && t_ok && in_front && exactly_ahead;
   endfunction
 endpackage

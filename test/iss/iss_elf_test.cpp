@@ -224,6 +224,30 @@ TEST(IssElf, ASegmentWithoutFlagsHoldingTheEntryIsCode) {
   EXPECT_EQ(r.exit_code, 5u);
 }
 
+// Every code word is predecoded up front, so executable segments may span at most 64 MiB (a
+// fuzz-found hang: an executable p_memsz of 1.75 GiB took minutes). One word past the limit
+// is refused, naming the file and the span; two segments 1 MiB apart still run.
+TEST(IssElf, ExecutableSpanAbove64MiBIsRefusedNamingTheFile) {
+  ElfSpec spec = tohost_program();
+  spec.segments.push_back({static_cast<uint32_t>(0x10000 + kMaxCodeBytes), {enc::jal(0, 0)}, 0, 5});
+  const ElfImage image = parse_elf("huge.elf", build_elf(spec));
+  try {
+    make_program(image, 4096);
+    FAIL() << "a 64 MiB + 4 byte code span was accepted";
+  } catch (const ElfError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("huge.elf"), std::string::npos) << what;
+    EXPECT_NE(what.find("executable segments span " + std::to_string(kMaxCodeBytes + 4) + " bytes"), std::string::npos)
+        << what;
+  }
+  ElfSpec near = tohost_program();
+  near.segments.push_back({0x10000 + (1u << 20), {enc::jal(0, 0)}, 0, 5});
+  Program p = make_program(parse_elf("near.elf", build_elf(near)), 4096);
+  Hart<FlatMemory> hart(p.code, p.memory);
+  prepare_hart(hart, p);
+  EXPECT_EQ(hart.run(100).reason, StopReason::kToHost);
+}
+
 TEST(IssElf, FlagsAreNeverInferredWhenSomeSegmentSaysExecutable) {
   ElfSpec spec = tohost_program();
   spec.segments[1].flags = 0;  // a data segment without flags stays data

@@ -196,12 +196,27 @@ TEST(NumericsTriangle, AxisRaysOnExactEdgesAndVertices) {
   }
 }
 
+// Whether o lies within rounding of the plane of (v0, v1, v2): the orientation
+// dot(a, cross(b, c)) of the vertices relative to o, in double (the products of two floats
+// are exact), within twice the filter bound of intersect.h's t_exactly_positive.
+bool origin_near_plane(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f o) {
+  const double a[3] = {double(v0.x) - o.x, double(v0.y) - o.y, double(v0.z) - o.z};
+  const double b[3] = {double(v1.x) - o.x, double(v1.y) - o.y, double(v1.z) - o.z};
+  const double c[3] = {double(v2.x) - o.x, double(v2.y) - o.y, double(v2.z) - o.z};
+  const double orient = a[2] * (b[0] * c[1] - c[0] * b[1]) + b[2] * (c[0] * a[1] - a[0] * c[1]) +
+                        c[2] * (a[0] * b[1] - b[0] * a[1]);
+  const double permanent = (std::fabs(b[0] * c[1]) + std::fabs(c[0] * b[1])) * std::fabs(a[2]) +
+                           (std::fabs(c[0] * a[1]) + std::fabs(a[0] * c[1])) * std::fabs(b[2]) +
+                           (std::fabs(a[0] * b[1]) + std::fabs(b[0] * a[1])) * std::fabs(c[2]);
+  return std::fabs(orient) <= 2.0 * double(detail::kOrientError) * permanent;
+}
+
 // A ray through the shared edge of two triangles (any orientation, any fold angle) hits at
 // least one of them: the edge term is computed from the same two projected points with
 // opposite orientation, and its sign is exact.
 TEST(NumericsTriangle, SharedEdgeNeverLetsARayThrough) {
   Pcg32 rng = Pcg32::keyed(4, 4);
-  uint64_t rays = 0, through = 0;
+  uint64_t rays = 0, through = 0, through_near_plane = 0;
   for (int i = 0; i < 300000; ++i) {
     const double scale = std::ldexp(1.0, int(rng.below(60)) - 30);
     auto pt = [&] {
@@ -229,11 +244,101 @@ TEST(NumericsTriangle, SharedEdgeNeverLetsARayThrough) {
     if (!r1.valid || !r2.valid || r1.t <= 1e-3 || r2.t <= 1e-3) continue;
     if (std::fabs(r1.b2) > 1e-4 || std::min(r1.b0, r1.b1) < 0.01 || std::min(r2.b0, r2.b1) < 0.01) continue;
     ++rays;
-    if (!h1 && !h2) ++through;
+    if (h1 || h2) continue;
+    // The one documented exception (docs/numerics.md, "Sign of t"): an origin within rounding
+    // of a triangle's plane does not hit it, so a ray from the plane of an edge-on neighbour
+    // can pass between the two.
+    if (origin_near_plane(a, b, c, o) || origin_near_plane(b, a, e, o))
+      ++through_near_plane;
+    else
+      ++through;
   }
   report_rate("rays through a shared edge that hit neither triangle", through, rays);
+  report_rate("... of them with the origin within rounding of either plane", through_near_plane, rays);
   EXPECT_GT(rays, 50000u);
   EXPECT_EQ(through, 0u);
+  EXPECT_LE(through_near_plane, rays / 10000) << "the near-plane exception is meant to be rare";
+}
+
+// A ray whose origin lies in a triangle's plane: the exact t is 0 (or, after the origin's
+// rounding, within rounding of 0), and tmin = 0 is open, so a hit may be reported only where
+// the exact t is positive. The rounded t_num alone has the wrong sign in about a fifth of these
+// rays (before the fix: 19,434 of 200,000 at translation 0 hit at exact t <= 0). The origin is
+// a float-rounded point inside the triangle, so every ray's line goes through the triangle and
+// only the sign of t decides. The exact sign comes from the orientation in double, where the
+// products of two floats are exact; a case it cannot resolve is counted apart.
+TEST(NumericsTriangle, OriginInThePlaneNeverHitsAtOrBehindIt) {
+  struct Case { double scale, offset; };
+  const Case cases[] = {{1, 0}, {1, 1e3}, {1, 1e5}, {1e-3, 0}, {1e-3, 1}, {1e3, 1e5}, {1e-6, 0}};
+  for (const Case& c : cases) {
+    Pcg32 rng = Pcg32::keyed(13, uint64_t(std::log2(c.scale) + 100) * 31 + uint64_t(std::log10(c.offset + 1)));
+    auto pt = [&] {
+      return Vec3f{round_f(c.offset + c.scale * (2.0 * rng.uniform() - 1.0)),
+                   round_f(-0.5 * c.offset + c.scale * (2.0 * rng.uniform() - 1.0)),
+                   round_f(0.25 * c.offset + c.scale * (2.0 * rng.uniform() - 1.0))};
+    };
+    uint64_t rays = 0, hits = 0, at_or_behind = 0, unresolved = 0;
+    for (int i = 0; i < 40000; ++i) {
+      const Vec3f v0 = pt(), v1 = pt(), v2 = pt();
+      double w1 = rng.uniform(), w2 = rng.uniform();
+      if (w1 + w2 > 1) {
+        w1 = 1 - w1;
+        w2 = 1 - w2;
+      }
+      auto mix = [&](float p0, float p1, float p2) {
+        return round_f(double(p0) + w1 * (double(p1) - p0) + w2 * (double(p2) - p0));
+      };
+      const Vec3f o{mix(v0.x, v1.x, v2.x), mix(v0.y, v1.y, v2.y), mix(v0.z, v1.z, v2.z)};
+      const Vec3f d = random_unit(rng);
+      ++rays;
+      TrianglePartial p;
+      if (!triangle_hit_test(v0, v1, v2, o, d, &p)) continue;
+      ++hits;
+      const double a[3] = {double(v0.x) - o.x, double(v0.y) - o.y, double(v0.z) - o.z};
+      const double b[3] = {double(v1.x) - o.x, double(v1.y) - o.y, double(v1.z) - o.z};
+      const double e[3] = {double(v2.x) - o.x, double(v2.y) - o.y, double(v2.z) - o.z};
+      const double orient = a[2] * (b[0] * e[1] - e[0] * b[1]) + b[2] * (e[0] * a[1] - a[0] * e[1]) +
+                            e[2] * (a[0] * b[1] - b[0] * a[1]);
+      const double permanent = (std::fabs(b[0] * e[1]) + std::fabs(e[0] * b[1])) * std::fabs(a[2]) +
+                               (std::fabs(e[0] * a[1]) + std::fabs(a[0] * e[1])) * std::fabs(b[2]) +
+                               (std::fabs(a[0] * b[1]) + std::fabs(b[0] * a[1])) * std::fabs(e[2]);
+      // t = orient / dot(n, d), n = cross(v1 - v0, v2 - v0).
+      const double n[3] = {(b[1] - a[1]) * (e[2] - a[2]) - (b[2] - a[2]) * (e[1] - a[1]),
+                           (b[2] - a[2]) * (e[0] - a[0]) - (b[0] - a[0]) * (e[2] - a[2]),
+                           (b[0] - a[0]) * (e[1] - a[1]) - (b[1] - a[1]) * (e[0] - a[0])};
+      const double nd = n[0] * d.x + n[1] * d.y + n[2] * d.z;
+      if (std::fabs(orient) <= 1e-14 * permanent) {
+        ++unresolved;
+      } else if (!(orient / nd > 0)) {
+        ++at_or_behind;
+      }
+    }
+    std::ostringstream what;
+    what << "scale " << c.scale << " offset " << c.offset;
+    std::cout << "[numerics] origin in the plane, " << what.str() << ": " << hits << " of " << rays
+              << " rays hit, " << at_or_behind << " at exact t <= 0, " << unresolved << " unresolved in double\n";
+    EXPECT_EQ(at_or_behind, 0u) << what.str();
+    EXPECT_EQ(unresolved, 0u) << what.str();
+    // Without translation the rounded origin stays within rounding of the plane: almost no hit.
+    if (c.offset == 0) {
+      EXPECT_LT(hits, rays / 20) << what.str();
+    }
+  }
+}
+
+// An axis-aligned triangle and an origin exactly in its plane: orient is an exact 0, so no
+// direction hits, whatever the projection's rounding makes of t_num.
+TEST(NumericsTriangle, OriginExactlyInAnAxisPlaneNeverHits) {
+  Pcg32 rng = Pcg32::keyed(14, 1);
+  uint64_t hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float z = round_f(1e5 * (2.0 * rng.uniform() - 1.0));
+    const Vec3f v0{0.0f, 0.0f, z}, v1{1.0f, 0.0f, z}, v2{0.0f, 1.0f, z};
+    const Vec3f o{round_f(0.3 * rng.uniform()), round_f(0.3 * rng.uniform()), z};
+    TrianglePartial p;
+    if (triangle_hit_test(v0, v1, v2, o, random_unit(rng), &p)) ++hits;
+  }
+  EXPECT_EQ(hits, 0u);
 }
 
 // Duplicate vertices: one term is an exact zero and the other two exact negatives of each
