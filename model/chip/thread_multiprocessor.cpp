@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "model/chip/tm_thread_processor.h"
-#include "model/chip/tp_schedule.h"
 #include "model/iss/hart_impl.h"
 
 namespace strata::chip {
@@ -127,7 +126,8 @@ void ThreadMultiprocessor::run() {
   // issuing until it passes the runner-up (loosely timed: by up to timing.tp_slack_cycles,
   // which the XU and memory calendars absorb, since they accept requests out of time order;
   // precise: not at all), so the schedule is consulted once per burst.
-  TpSchedule schedule(static_cast<uint32_t>(tps_.size()));
+  schedule_ = TpSchedule(static_cast<uint32_t>(tps_.size()));
+  TpSchedule& schedule = schedule_;
   live_tps_ = static_cast<uint32_t>(tps_.size());
   stamp_ = sc_core::sc_time_stamp().value();
   global_cycle_ = clock_.now_at(stamp_);

@@ -35,6 +35,7 @@
 #include "model/chip/global_registers.h"
 #include "model/chip/tm_sampler.h"
 #include "model/chip/tp_memory.h"
+#include "model/chip/tp_schedule.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
 #include "model/memory/sparse_memory.h"
@@ -160,6 +161,9 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   tm::XuCrossbar xus_;
   std::unique_ptr<iss::FusedPipelineBackend> pipeline_backend_;  // before tps_: they point at it
   std::vector<std::unique_ptr<Tp>> tps_;
+  // run()'s TP schedule, a member rather than a local: an interrupted simulation never
+  // returns from run() (its SC_THREAD stays suspended), so a local would leak at exit.
+  TpSchedule schedule_{0};
   TmCounters counters_;
   std::string error_;
   bool finished_ = false;
