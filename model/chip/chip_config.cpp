@@ -88,6 +88,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind_enum("timing.mode", &timing.mode, {"lt", "precise", "sampled"});
   b.bind("timing.quantum_cycles", &timing.quantum_cycles);
   b.bind("timing.tp_slack_cycles", &timing.tp_slack_cycles);
+  b.bind("timing.sync_shared_ops", &timing.sync_shared_ops);
   b.bind("timing.sample_period_cycles", &timing.sample_period_cycles);
   b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);

@@ -48,6 +48,13 @@ struct TimingConfig {
   // earliest one. Larger bursts simulate faster; the XU and memory calendars still see every
   // request at its own cycle.
   uint32_t tp_slack_cycles = 32;
+  // LT: a stream-memory or global-register operation waits until global time reaches its
+  // cycle, so the ray buffers, the treelet assignments and the global registers change in
+  // time order, as in precise mode. Off, they change in arrival order: a TM a quantum ahead
+  // drains the fullest buffer before the others ask, so TMs spread over treelets instead of
+  // sharing the fullest one, and LT shows fewer L1 misses than precise
+  // (docs/memory-system.md, "Where LT differs").
+  bool sync_shared_ops = true;
   // Sampled: every sample_period_cycles, sample_detail_cycles run loosely timed; the rest of
   // the period fast-forwards functionally at each TM's measured cycles per instruction. The
   // first sample_warmup_cycles of a detailed window refill the scoreboards and calendars

@@ -30,6 +30,8 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       access_ext_(new transport::MemoryExtension),  // owned by access_gp_ from here (set_extension)
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
+      sync_all_memory_(env.config->timing.mode == transport::TimingMode::kPrecise),
+      sync_shared_(sync_all_memory_ || env.config->timing.sync_shared_ops),
       xus_(env.config->tm),
       sampler_(env.config->timing, env.schedule, env.config->global_register_latency_cycles),
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
@@ -108,11 +110,16 @@ void ThreadMultiprocessor::fail(const Tp& tp, const std::string& what) {
   sc_core::sc_stop();
 }
 
-void ThreadMultiprocessor::sync_to(Cycle t) {
+void ThreadMultiprocessor::sync_to(Cycle t, Cycle others, bool exact) {
   // Global time cannot move while this thread runs, so it is read only after a wait.
   const bool precise = config_.timing.mode == transport::TimingMode::kPrecise;
-  if (t > global_cycle_ && (precise || t - global_cycle_ >= config_.timing.quantum_cycles)) {
-    sc_core::wait(clock_.delay_until(t));
+  if (t > global_cycle_ && (precise || exact || t - global_cycle_ >= config_.timing.quantum_cycles)) {
+    // Not past the TM's other TPs: the TP being stepped may be up to the TP slack ahead of
+    // them, and global time beyond their next cycles would make every calendar move their
+    // requests to it (a booking before global time starts at global time).
+    const Cycle target = std::min(t, others);
+    if (target <= global_cycle_) return;
+    sc_core::wait(clock_.delay_until(target));
     stamp_ = sc_core::sc_time_stamp().value();
     global_cycle_ = clock_.now_at(stamp_);
     // The crossbar may forget what lies before every TP of this TM: the TP being stepped
@@ -121,11 +128,28 @@ void ThreadMultiprocessor::sync_to(Cycle t) {
   }
 }
 
+Cycle ThreadMultiprocessor::synchronised_issue(Tp& tp) {
+  const iss::Decoded* d = tp.hart.next_instruction();
+  if (d == nullptr || !tp.timing.is_memory(*d)) return 0;
+  if (!sync_all_memory_) {
+    const iss::InstrClass cls = iss::op_info(d->op).cls;
+    if (cls != iss::InstrClass::kStrataStream && cls != iss::InstrClass::kStrataGlobal) return 0;
+  }
+  if (!tp.fetched) {
+    tp.fetch_ready = fetch(tp, tp.hart.pc());
+    tp.fetched = true;
+  }
+  return tp.timing.begin_memory(*d, tp.fetch_ready);
+}
+
 void ThreadMultiprocessor::run() {
   // The TP with the earliest next issue cycle goes next (ties: the lower TP). It keeps
   // issuing until it passes the runner-up (loosely timed: by up to timing.tp_slack_cycles,
   // which the XU and memory calendars absorb, since they accept requests out of time order;
-  // precise: not at all), so the schedule is consulted once per burst.
+  // precise: not at all), so the schedule is consulted once per burst. Global time never
+  // passes a TP of the TM (sync_to), and the ops that must reach shared state in time order
+  // (precise: every memory-like op; LT: stream and global-register ops) wait for global time
+  // to reach their issue cycle, handing the TM to its other TPs meanwhile.
   schedule_ = TpSchedule(static_cast<uint32_t>(tps_.size()));
   TpSchedule& schedule = schedule_;
   live_tps_ = static_cast<uint32_t>(tps_.size());
@@ -163,11 +187,24 @@ void ThreadMultiprocessor::run() {
       if (tp.forwarded) {  // detailed timing resumes with an empty scoreboard
         tp.timing.reset(start);
         tp.fetch_line = 0xFFFFFFFFu;
+        tp.fetched = false;
         tp.forwarded = false;
       }
     }
+    const Cycle others = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
     for (Cycle t = start;; t = tp.timing.next_issue()) {
-      sync_to(t);
+      sync_to(t, others);
+      // An op that must reach shared state in time order is sent when global time reaches
+      // the cycle it issues in (its operands and fetch may hold it back); if another TP of
+      // this TM issues before then, that one goes first.
+      if (sync_shared_) {
+        const Cycle at = synchronised_issue(tp);
+        if (at > others) {
+          schedule.set(index, at);
+          break;
+        }
+        if (at != 0) sync_to(at, others, true);
+      }
       if (sampler_.enabled()) sampler_.count_measured(window, t);
       if (!step(tp)) {
         counters_.finished_cycle = std::max(counters_.finished_cycle, tp.timing.next_issue());
@@ -266,7 +303,8 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     fail(tp, "the pc left the firmware's code");
     return false;
   }
-  const Cycle fetch_ready = fetch(tp, tp.hart.pc());
+  const Cycle fetch_ready = tp.fetched ? tp.fetch_ready : fetch(tp, tp.hart.pc());
+  tp.fetched = false;
   const bool memory_like = tp.timing.is_memory(*d);
   const Cycle earliest = memory_like ? tp.timing.begin_memory(*d, fetch_ready) : 0;
   const iss::Decoded decoded = *d;  // the hart may rewrite the code image (self-modifying code)

@@ -124,7 +124,14 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
  private:
   struct Tp;
   void run();
-  void sync_to(transport::Cycle t);
+  // Lets global time catch up with `t` when the TM's lead calls for it (precise: always;
+  // `exact`: always), but never past `others`, the earliest next cycle of the TM's other TPs:
+  // a TP behind global time would have its requests moved to it by every calendar.
+  void sync_to(transport::Cycle t, transport::Cycle others = ~transport::Cycle{0}, bool exact = false);
+  // The cycle at which `tp`'s next instruction must reach the shared resources in time order
+  // (precise: every memory-like op; LT with timing.sync_shared_ops: stream and global-register
+  // ops), or 0 if it need not. Makes the instruction's fetch (kept in the Tp).
+  transport::Cycle synchronised_issue(Tp& tp);
   bool step(Tp& tp);  // false: the TP is done (halted, or failed)
   // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
   bool fast_forward(Tp& tp, transport::Cycle until);
@@ -158,6 +165,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   transport::MemoryExtension* access_ext_;
   tm::OpTimingTable op_table_;
   transport::Cycle burst_slack_;
+  bool sync_all_memory_ = false;  // precise mode
+  bool sync_shared_ = false;      // precise, or LT with timing.sync_shared_ops
   tm::XuCrossbar xus_;
   std::unique_ptr<iss::FusedPipelineBackend> pipeline_backend_;  // before tps_: they point at it
   std::vector<std::unique_ptr<Tp>> tps_;

@@ -26,6 +26,10 @@ struct ThreadMultiprocessor::Tp {
   uint32_t fetch_line = 0xFFFFFFFFu;
   double ff_clock = 0.0;       // fast-forward time, with the fraction of a cycle kept
   bool forwarded = false;      // fast-forwarded since it was last timed in detail
+  // The next instruction's fetch was already made (to find when an op that must be sent in
+  // time order issues; it may then wait for its operands); its answer is kept for the step.
+  bool fetched = false;
+  transport::Cycle fetch_ready = 0;
 };
 
 }  // namespace strata::chip
