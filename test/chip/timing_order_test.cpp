@@ -52,7 +52,7 @@ TEST(TimingOrder, PreciseModeSendsEveryTpRequestInTimeOrder) {
   // Sent at the cycle the TP was stepped, it reached the L1 ahead of the other TPs'
   // lookups of the cycles in between, and the L1 had to correct it (reordered > 0).
   REQUIRE_KERNEL("streams_pipelines");
-  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 16, "streams_pipelines");
+  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32, "streams_pipelines");
   Chip chip("precise", streams_chip(transport::TimingMode::kPrecise, frame, 4), frame.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
@@ -69,7 +69,7 @@ TEST(TimingOrder, StreamOperationsInTimeOrderKeepLtL1MissesWithPrecise) {
   // buffer before the other TMs asked for it: they spread over treelets instead of sharing
   // it, switched treelets less, and LT missed less in the L1 than precise.
   REQUIRE_KERNEL("streams_pipelines");
-  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 16, "streams_pipelines");
+  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32, "streams_pipelines");
   const ChipConfig synced = streams_chip(transport::TimingMode::kLooselyTimed, frame, 4);
   ASSERT_TRUE(synced.timing.sync_shared_ops);
   ChipConfig arrival = synced;
