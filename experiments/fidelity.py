@@ -70,6 +70,11 @@ def main():
         sys.exit(f"fidelity: {e}")
     runs = [run_mod.with_digest({"config": config, "scene": a.scene, "res": a.res, "set": dict(sets)})
             for _, sets in MODES]
+    # Every error is against the precise frame, so all frames must come from this build.
+    rebuilt = run_mod.forget_other_builds(out, runs)
+    if rebuilt:
+        print(f"fidelity: {rebuilt} finished frame(s) were made by another strata-sim build "
+              f"({run_mod.SIM}): running them again", file=sys.stderr)
     pending = [p for p in runs if not run_mod.is_done(run_mod.folder_of(out, p))]
     print(f"fidelity: {len(runs)} frames, {len(runs) - len(pending)} already done", file=sys.stderr)
     if pending:

@@ -89,6 +89,21 @@ class SweepTest(unittest.TestCase):
         self.run_sweep(["ok", "broken", "cut"])
         self.assertEqual(sorted(self.calls()), ["broken", "broken", "cut", "cut", "ok"])
 
+    def test_frames_of_another_build_are_forgotten_and_run_again(self):
+        self.run_sweep(["a", "b"])
+        runs = [{"config": "trax", "scene": s, "res": "8x8", "set": {"tms": 2}} for s in ("a", "b")]
+        self.assertEqual(sweep.run_mod.forget_other_builds(self.root, runs, self.sim), 0)  # same build
+        with open(self.sim, "a") as f:
+            f.write("# rebuilt\n")  # another binary: another digest
+        self.assertEqual(sweep.run_mod.forget_other_builds(self.root, runs, self.sim), 2)
+        folder = sweep.run_mod.folder_of(self.root, runs[0])
+        self.assertFalse(sweep.run_mod.is_done(folder))
+        self.assertTrue(os.path.exists(os.path.join(folder, "done-other-build.json")))
+        again = self.run_sweep(["a", "b"])
+        self.assertEqual(sorted(self.calls()), ["a", "a", "b", "b"])
+        self.assertFalse(any(r.cached for r in again))
+        self.assertEqual(sweep.run_mod.forget_other_builds(self.root, runs, self.sim), 0)
+
     def test_flatten_puts_the_unit_in_the_column_name(self):
         stats = {"frame": {"cycles": 5, "seconds": 1e-6}, "memory": {"dram": {"bytes": 7}},
                  "design": {"name": "x", "streams": True}, "config": {"tms": 128},

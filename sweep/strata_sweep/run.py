@@ -25,16 +25,43 @@ def simulator_digest(sim=None):
     run, so a table can tell frames of two builds apart (the run key does not include it: a
     rebuild that changes nothing would otherwise re-run every frame)."""
     path = os.path.realpath(sim or SIM)
-    if path not in _sim_digests:
+    try:
+        st = os.stat(path)
+        key = (path, st.st_mtime_ns, st.st_size)  # a rebuild under a running sweep is seen
+    except OSError:
+        return None
+    if key not in _sim_digests:
         h = hashlib.sha256()
         try:
             with open(path, "rb") as f:
                 for block in iter(lambda: f.read(1 << 20), b""):
                     h.update(block)
-            _sim_digests[path] = h.hexdigest()[:16]
+            _sim_digests[key] = h.hexdigest()[:16]
         except OSError:
-            _sim_digests[path] = None
-    return _sim_digests[path]
+            _sim_digests[key] = None
+    return _sim_digests[key]
+
+
+def forget_other_builds(root, runs, sim=None):
+    """Un-marks the finished runs among `runs` that another strata-sim build made (their
+    done.json names a different binary digest), so they run again; returns how many. For
+    reports that compare frames with each other (the fidelity report's errors against
+    precise), where a frame of an older build would make the comparison meaningless. The old
+    marker is kept as done-other-build.json."""
+    current = simulator_digest(sim)
+    forgotten = 0
+    for params in runs:
+        folder = folder_of(root, params)
+        marker = os.path.join(folder, "done.json")
+        try:
+            with open(marker) as f:
+                made_by = json.load(f).get("simulator_sha256")
+        except (OSError, ValueError):
+            continue
+        if current is not None and made_by != current:
+            os.replace(marker, os.path.join(folder, "done-other-build.json"))
+            forgotten += 1
+    return forgotten
 
 
 def config_digest(config):
