@@ -1,7 +1,6 @@
 // The verilated pipelines clocked by hand: see clocked_pipelines.h.
 #include "rtl/cosim/clocked_pipelines.h"
 
-#include <cstring>
 #include <stdexcept>
 
 #include "Vbox_pipeline_cc.h"
@@ -9,19 +8,11 @@
 #include "verilated.h"
 #include "verilated_vcd_c.h"
 
+#include "rtl/cosim/float_bits.h"
+
 namespace strata::rtl {
 namespace {
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-float from_bits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
 float lane_float(uint64_t v, int lane) { return from_bits(static_cast<uint32_t>(v >> (32 * lane))); }
 bool lane_bit(uint32_t v, int lane) { return (v >> lane & 1u) != 0; }
 uint64_t on_lane(float f, int lane) { return static_cast<uint64_t>(bits(f)) << (32 * lane); }

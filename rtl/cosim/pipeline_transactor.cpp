@@ -1,22 +1,13 @@
 // TLM-2.0 transactor for the verilated fused pipelines: see pipeline_transactor.h.
 #include "rtl/cosim/pipeline_transactor.h"
 
-#include <cstring>
 #include <string>
+
+#include "rtl/cosim/float_bits.h"
 
 namespace strata::rtl {
 namespace {
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-float from_bits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
 uint32_t lane_word(uint64_t v, int lane) { return static_cast<uint32_t>(v >> (32 * lane)); }
 bool lane_bit(uint32_t v, int lane) { return (v >> lane & 1u) != 0; }
 

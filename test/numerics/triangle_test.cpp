@@ -196,19 +196,26 @@ TEST(NumericsTriangle, AxisRaysOnExactEdgesAndVertices) {
   }
 }
 
-// Whether o lies within rounding of the plane of (v0, v1, v2): the orientation
-// dot(a, cross(b, c)) of the vertices relative to o, in double (the products of two floats
-// are exact), within twice the filter bound of intersect.h's t_exactly_positive.
-bool origin_near_plane(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f o) {
+// The orientation dot(a, cross(b, c)) of the vertices relative to o, and its permanent (the
+// same expression with absolute values), in double: the products of two floats are exact.
+struct Orientation {
+  double orient, permanent;
+};
+Orientation orientation(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f o) {
   const double a[3] = {double(v0.x) - o.x, double(v0.y) - o.y, double(v0.z) - o.z};
   const double b[3] = {double(v1.x) - o.x, double(v1.y) - o.y, double(v1.z) - o.z};
   const double c[3] = {double(v2.x) - o.x, double(v2.y) - o.y, double(v2.z) - o.z};
-  const double orient = a[2] * (b[0] * c[1] - c[0] * b[1]) + b[2] * (c[0] * a[1] - a[0] * c[1]) +
-                        c[2] * (a[0] * b[1] - b[0] * a[1]);
-  const double permanent = (std::fabs(b[0] * c[1]) + std::fabs(c[0] * b[1])) * std::fabs(a[2]) +
-                           (std::fabs(c[0] * a[1]) + std::fabs(a[0] * c[1])) * std::fabs(b[2]) +
-                           (std::fabs(a[0] * b[1]) + std::fabs(b[0] * a[1])) * std::fabs(c[2]);
-  return std::fabs(orient) <= 2.0 * double(detail::kOrientError) * permanent;
+  return {a[2] * (b[0] * c[1] - c[0] * b[1]) + b[2] * (c[0] * a[1] - a[0] * c[1]) + c[2] * (a[0] * b[1] - b[0] * a[1]),
+          (std::fabs(b[0] * c[1]) + std::fabs(c[0] * b[1])) * std::fabs(a[2]) +
+              (std::fabs(c[0] * a[1]) + std::fabs(a[0] * c[1])) * std::fabs(b[2]) +
+              (std::fabs(a[0] * b[1]) + std::fabs(b[0] * a[1])) * std::fabs(c[2])};
+}
+
+// Whether o lies within rounding of the plane of (v0, v1, v2): the orientation within twice
+// the filter bound of intersect.h's t_exactly_positive.
+bool origin_near_plane(Vec3f v0, Vec3f v1, Vec3f v2, Vec3f o) {
+  const Orientation r = orientation(v0, v1, v2, o);
+  return std::fabs(r.orient) <= 2.0 * double(detail::kOrientError) * r.permanent;
 }
 
 // A ray through the shared edge of two triangles (any orientation, any fold angle) hits at
@@ -294,22 +301,15 @@ TEST(NumericsTriangle, OriginInThePlaneNeverHitsAtOrBehindIt) {
       TrianglePartial p;
       if (!triangle_hit_test(v0, v1, v2, o, d, &p)) continue;
       ++hits;
-      const double a[3] = {double(v0.x) - o.x, double(v0.y) - o.y, double(v0.z) - o.z};
-      const double b[3] = {double(v1.x) - o.x, double(v1.y) - o.y, double(v1.z) - o.z};
-      const double e[3] = {double(v2.x) - o.x, double(v2.y) - o.y, double(v2.z) - o.z};
-      const double orient = a[2] * (b[0] * e[1] - e[0] * b[1]) + b[2] * (e[0] * a[1] - a[0] * e[1]) +
-                            e[2] * (a[0] * b[1] - b[0] * a[1]);
-      const double permanent = (std::fabs(b[0] * e[1]) + std::fabs(e[0] * b[1])) * std::fabs(a[2]) +
-                               (std::fabs(e[0] * a[1]) + std::fabs(a[0] * e[1])) * std::fabs(b[2]) +
-                               (std::fabs(a[0] * b[1]) + std::fabs(b[0] * a[1])) * std::fabs(e[2]);
+      const Orientation r = orientation(v0, v1, v2, o);
       // t = orient / dot(n, d), n = cross(v1 - v0, v2 - v0).
-      const double n[3] = {(b[1] - a[1]) * (e[2] - a[2]) - (b[2] - a[2]) * (e[1] - a[1]),
-                           (b[2] - a[2]) * (e[0] - a[0]) - (b[0] - a[0]) * (e[2] - a[2]),
-                           (b[0] - a[0]) * (e[1] - a[1]) - (b[1] - a[1]) * (e[0] - a[0])};
+      const double e1[3] = {double(v1.x) - v0.x, double(v1.y) - v0.y, double(v1.z) - v0.z};
+      const double e2[3] = {double(v2.x) - v0.x, double(v2.y) - v0.y, double(v2.z) - v0.z};
+      const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
       const double nd = n[0] * d.x + n[1] * d.y + n[2] * d.z;
-      if (std::fabs(orient) <= 1e-14 * permanent) {
+      if (std::fabs(r.orient) <= 1e-14 * r.permanent) {
         ++unresolved;
-      } else if (!(orient / nd > 0)) {
+      } else if (!(r.orient / nd > 0)) {
         ++at_or_behind;
       }
     }
