@@ -22,8 +22,7 @@ ReservationCalendar::ReservationCalendar(uint32_t units_per_cycle, uint32_t hori
   if (horizon_cycles > (1u << 30)) throw std::invalid_argument("ReservationCalendar: horizon too large");
   // Twice the window's slots: a window not aligned to 64 cycles spans one block more than
   // it holds, and its first and last blocks must not share a word.
-  full_.assign(2 * horizon_ / 64, 0);
-  block_.assign(2 * horizon_ / 64, kNone);  // no block: every slot reads as empty
+  words_.assign(2 * horizon_ / 64, Word{kNone, 0});  // no block: every slot reads as empty
   if (capacity_ > 1) used_.assign(2 * horizon_, 0);
 }
 
@@ -57,10 +56,11 @@ Cycle ReservationCalendar::first_below(Cycle from, uint32_t limit, Cycle until) 
   while (c < end) {
     const uint32_t slot = static_cast<uint32_t>(c & mask_);
     const uint32_t bit = slot & 63;
-    if (block_[slot >> 6] != (c >> 6)) return c;  // a block nothing is booked in yet
+    const Word& w = words_[slot >> 6];
+    if (w.block != (c >> 6)) return c;  // a block nothing is booked in yet
     // Full cycles hold capacity_ >= limit units: skip them a word at a time.
     const uint64_t below = bit == 0 ? 0 : ((uint64_t{1} << bit) - 1);
-    const uint64_t word = full_[slot >> 6] | below;
+    const uint64_t word = w.full | below;
     if (word == ~uint64_t{0}) {
       c += 64 - bit;
       continue;
@@ -96,7 +96,7 @@ Cycle ReservationCalendar::book_below(Cycle earliest, uint32_t limit) {
   }
   const uint32_t slot = claim(f);
   used_[slot] = static_cast<uint16_t>(used_[slot] + 1);
-  if (used_[slot] == capacity_) full_[slot >> 6] |= uint64_t{1} << (slot & 63);
+  if (used_[slot] == capacity_) words_[slot >> 6].full |= uint64_t{1} << (slot & 63);
   if (limit == below_limit_ && f == below_hi_ && used_[slot] >= limit) below_hi_ = f + 1;
   if (f == run_hi_ && used_[slot] == capacity_) run_hi_ = f + 1;  // book()'s full run grew too
   latest_end_ = std::max(latest_end_, f + 1);
@@ -131,9 +131,8 @@ Cycle ReservationCalendar::first_gap(Cycle from, uint32_t length) const {
 uint32_t ReservationCalendar::claim(Cycle c) {
   const uint32_t slot = static_cast<uint32_t>(c & mask_);
   const uint32_t w = slot >> 6;
-  if (block_[w] != (c >> 6)) {
-    block_[w] = c >> 6;
-    full_[w] = 0;
+  if (words_[w].block != (c >> 6)) {
+    words_[w] = Word{c >> 6, 0};
     if (capacity_ > 1) std::fill_n(used_.begin() + (w << 6), 64, uint16_t{0});
   }
   return slot;
@@ -172,19 +171,20 @@ Booking ReservationCalendar::book(Cycle earliest, uint32_t units) {
     const uint32_t slot = claim(f);
     const uint64_t bit = uint64_t{1} << (slot & 63);
     uint32_t take = 1;
+    uint64_t& full = words_[slot >> 6].full;
     if (capacity_ == 1) {
-      full_[slot >> 6] |= bit;
+      full |= bit;
     } else {
       take = std::min(capacity_ - used_[slot], units);
       used_[slot] = static_cast<uint16_t>(used_[slot] + take);
-      if (used_[slot] == capacity_) full_[slot >> 6] |= bit;
+      if (used_[slot] == capacity_) full |= bit;
     }
     units -= take;
     if (!started) {
       b.first = f;
       started = true;
     }
-    if (f == run_hi_ && (full_[slot >> 6] & bit)) run_hi_ = f + 1;  // the run grew by this cycle
+    if (f == run_hi_ && (full & bit)) run_hi_ = f + 1;  // the run grew by this cycle
     b.last = f;
     c = f + 1;
   }
@@ -197,20 +197,11 @@ void ReservationCalendar::expose(Cycle from, Cycle to) {
   const Cycle hi = std::min(to, overflow_tail_);
   for (Cycle c = lo; c < hi; ++c) {
     const uint32_t slot = claim(c);
-    full_[slot >> 6] |= uint64_t{1} << (slot & 63);
+    words_[slot >> 6].full |= uint64_t{1} << (slot & 63);
     if (capacity_ > 1) used_[slot] = static_cast<uint16_t>(capacity_);
   }
   // The whole tail is inside the window now; later overflows start a new one.
   if (overflow_tail_ <= to) overflow_head_ = overflow_tail_ = 0;
-}
-
-void ReservationCalendar::retire_before(Cycle now) {
-  if (now <= base_) return;
-  const Cycle old_end = base_ + horizon_;
-  // Nothing to clear: the retired slots' blocks go stale by themselves (claim()).
-  const Cycle new_end = now + horizon_;
-  base_ = now;
-  expose(std::max(old_end, now), new_end);
 }
 
 }  // namespace strata::transport

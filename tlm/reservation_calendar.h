@@ -22,6 +22,7 @@
 
 #include "tlm/clock.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,15 +59,23 @@ class ReservationCalendar {
   static constexpr Cycle kNone = ~Cycle{0};
 
   // Global time has reached `now`: no request can be made for an earlier cycle any more.
-  void retire_before(Cycle now);
+  // Inline: every booking of a shared unit calls it first. The retired slots' blocks go
+  // stale by themselves (claim()), so only an overflow tail needs work.
+  void retire_before(Cycle now) {
+    if (now <= base_) return;
+    const Cycle old_end = base_ + horizon_;
+    base_ = now;
+    if (overflow_tail_ != 0) expose(std::max(old_end, now), now + horizon_);
+  }
 
   // Units booked in cycle c (0 outside the window). Inline: the XU crossbar asks per cycle.
   uint32_t used(Cycle c) const {
     if (c < base_ || c >= base_ + horizon_) return 0;
     const uint32_t slot = static_cast<uint32_t>(c & mask_);
-    if (block_[slot >> 6] != (c >> 6)) return 0;
+    const Word& w = words_[slot >> 6];
+    if (w.block != (c >> 6)) return 0;
     if (capacity_ > 1) return used_[slot];
-    return static_cast<uint32_t>((full_[slot >> 6] >> (slot & 63)) & 1);
+    return static_cast<uint32_t>((w.full >> (slot & 63)) & 1);
   }
   Cycle base() const { return base_; }
   uint32_t horizon() const { return horizon_; }
@@ -79,8 +88,8 @@ class ReservationCalendar {
   Cycle first_full(Cycle from, Cycle to) const;  // the first full cycle in [from, to), or kNone
   // The full-bits word of c's block (0 if the block holds an older one).
   uint64_t full_word(Cycle c) const {
-    const uint32_t w = static_cast<uint32_t>(c & mask_) >> 6;
-    return block_[w] == (c >> 6) ? full_[w] : 0;
+    const Word& w = words_[static_cast<uint32_t>(c & mask_) >> 6];
+    return w.block == (c >> 6) ? w.full : 0;
   }
   // c's slot, after making its block hold c's block (clearing an older one's contents).
   uint32_t claim(Cycle c);
@@ -89,8 +98,13 @@ class ReservationCalendar {
   uint32_t capacity_;
   uint32_t horizon_;
   uint32_t mask_;  // slot of cycle c: c & mask_ (the ring holds 2 * horizon_ slots)
-  std::vector<uint64_t> full_;   // bit per slot: no capacity left
-  std::vector<Cycle> block_;     // per 64-slot word: the absolute block (cycle / 64) it holds
+  // Per 64 slots: the absolute block (cycle / 64) they hold, and a bit per slot with no
+  // capacity left. Side by side, so a lookup after another TM ran misses one cache line, not two.
+  struct Word {
+    Cycle block;
+    uint64_t full;
+  };
+  std::vector<Word> words_;
   std::vector<uint16_t> used_;  // units per slot; empty when capacity_ == 1 (the bit says it)
   Cycle base_ = 0;
   Cycle latest_end_ = 0;

@@ -174,7 +174,14 @@ void XuCrossbar::slide_window_slow(Cycle earliest) {
   retire_to(std::max(std::min(wanted, floor_), must));
 }
 
-void XuCrossbar::retire_before(Cycle now) { retire_to(std::min(now, floor_)); }
+void XuCrossbar::retire_before(Cycle now) {
+  // In steps of history_, as the window slides by itself: retiring touches every calendar,
+  // and the TM calls this after every wait for global time. No user asks for a cycle before
+  // the floor, so a window base up to history_ behind it times every request the same.
+  const Cycle to = std::min(now, floor_);
+  if (to < window_base_ + history_) return;
+  retire_to(to);
+}
 
 void XuCrossbar::retire_to(Cycle now) {
   if (now <= window_base_) return;

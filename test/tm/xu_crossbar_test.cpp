@@ -105,5 +105,22 @@ TEST(XuCrossbar, RetiringThePastKeepsBookingsAhead) {
   EXPECT_EQ(xus.issue_general(XuClass::kFpDiv, 110), 116u);
 }
 
+// retire_before slides the window in steps of xu_history_cycles (it touches every calendar):
+// a request behind the last step is served where it asks, one behind the window is late.
+TEST(XuCrossbar, RetiresInStepsOfTheHistory) {
+  TmConfig config;
+  XuCrossbar xus{config};
+  const Cycle step = config.xu_history_cycles;
+  xus.retire_before(step - 1);  // less than a step: nothing retired
+  EXPECT_EQ(xus.issue_general(XuClass::kFpMul, 10), 10u);
+  EXPECT_EQ(xus.stats(0).late_requests, 0u);
+  xus.retire_before(4 * step);  // a step or more: retired up to it
+  EXPECT_EQ(xus.issue_general(XuClass::kFpMul, 4 * step - 10), 4 * step);
+  EXPECT_EQ(xus.stats(0).late_requests, 1u);
+  xus.retire_before(4 * step + 100);  // within a step of the base: not moved
+  EXPECT_EQ(xus.issue_general(XuClass::kFpMul, 4 * step + 50), 4 * step + 50);
+  EXPECT_EQ(xus.stats(0).late_requests, 1u);
+}
+
 }  // namespace
 }  // namespace strata::tm
