@@ -20,6 +20,7 @@
 #include "sim/pipeline_backend.h"
 #include "sim/progress_monitor.h"
 #include "sim/resolution.h"
+#include "sim/sanitizer_stack.h"
 #include "sim/scene_source.h"
 
 namespace strata::sim {
@@ -110,6 +111,7 @@ void run_frame(RunOptions o) {
   progress.arm();
   const auto t0 = std::chrono::steady_clock::now();
   sc_core::sc_start();
+  restore_main_stack_for_asan();  // ASan builds only: the outputs below may throw (a full disk, a signal)
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.disarm();
   if (vcd) sc_core::sc_close_vcd_trace_file(vcd);
