@@ -11,22 +11,11 @@
 #include "Vfp32_minmax.h"
 #include "Vfp32_mul.h"
 #include "firmware/common/intersect.h"
+#include "rtl/cosim/float_bits.h"
 #include "verilated.h"
 
 namespace strata::rtl {
 namespace {
-
-float as_float(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
-
-uint32_t as_bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
 
 bool is_nan_bits(uint32_t u) { return (u & 0x7F800000u) == 0x7F800000u && (u & 0x007FFFFFu) != 0; }
 
@@ -87,7 +76,7 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 2, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const uint32_t host = as_bits(as_float(pairs[i].first) * as_float(pairs[i].second));
+            const uint32_t host = bits(from_bits(pairs[i].first) * from_bits(pairs[i].second));
             if (!fp_results_agree(m.y, host)) record(r, pairs[i], "rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();
@@ -101,8 +90,8 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 2, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const float a = as_float(pairs[i].first), b = as_float(pairs[i].second);
-            const uint32_t host = as_bits(sub ? a - b : a + b);
+            const float a = from_bits(pairs[i].first), b = from_bits(pairs[i].second);
+            const uint32_t host = bits(sub ? a - b : a + b);
             if (!fp_results_agree(m.y, host)) record(r, pairs[i], "rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();
@@ -113,7 +102,7 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 1, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const float a = as_float(pairs[i].first), b = as_float(pairs[i].second);
+            const float a = from_bits(pairs[i].first), b = from_bits(pairs[i].second);
             const bool lt = a < b, le = a <= b, eq = a == b;
             if (bool(m.lt) != lt || bool(m.le) != le || bool(m.eq) != eq)
               record(r, pairs[i],
@@ -135,9 +124,9 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
             m.max = (i % 2) == 0;
           },
           [&](size_t i) {
-            const float a = as_float(pairs[i / 2].first), b = as_float(pairs[i / 2].second);
+            const float a = from_bits(pairs[i / 2].first), b = from_bits(pairs[i / 2].second);
             const bool is_max = (i % 2) == 0;
-            const uint32_t host = as_bits(is_max ? max_ignore_nan(a, b) : min_ignore_nan(a, b));
+            const uint32_t host = bits(is_max ? max_ignore_nan(a, b) : min_ignore_nan(a, b));
             if (m.y != host) record(r, pairs[i / 2], std::string(is_max ? "max" : "min") + " rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();

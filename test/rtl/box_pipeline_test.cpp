@@ -16,6 +16,7 @@
 
 #include "Vbox_pipeline.h"
 #include "firmware/common/intersect.h"
+#include "rtl/cosim/float_bits.h"
 #include "test/rtl/box_cases.h"
 #include "test/rtl/pipeline_config.h"
 
@@ -25,11 +26,7 @@ namespace {
 using rtl_test::box_cases;
 using rtl_test::BoxOp;
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using rtl::bits;
 
 struct BoxResult {
   bool hit, overlap;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
+#include "rtl/cosim/float_bits.h"
 #include "model/iss/pipeline_reference.h"
 #include "rtl/cosim/rtl_fused_backend.h"
 #include "rtl/cosim/zero_time_transactor.h"
@@ -28,11 +29,7 @@ namespace {
 using rtl::FusedOpExtension;
 using rtl::FusedOpKind;
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using rtl::bits;
 
 bool same_partial(const TrianglePartial& a, const TrianglePartial& b) {
   return bits(a.e0) == bits(b.e0) && bits(a.e1) == bits(b.e1) && bits(a.e2) == bits(b.e2) &&

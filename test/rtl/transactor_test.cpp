@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
+#include "rtl/cosim/float_bits.h"
 #include "rtl/cosim/pipeline_transactor.h"
 #include "test/rtl/box_cases.h"
 #include "test/rtl/pipeline_config.h"
@@ -28,11 +29,7 @@ namespace {
 using rtl::FusedOpExtension;
 using rtl::FusedOpKind;
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using rtl::bits;
 
 const sc_core::sc_time kPeriod(1, sc_core::SC_NS);
 

@@ -15,6 +15,7 @@
 
 #include "Vtriangle_pipeline.h"
 #include "firmware/common/intersect.h"
+#include "rtl/cosim/float_bits.h"
 #include "test/rtl/pipeline_config.h"
 #include "test/rtl/triangle_cases.h"
 
@@ -24,11 +25,7 @@ namespace {
 using rtl_test::triangle_cases;
 using rtl_test::TriOp;
 
-uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using rtl::bits;
 
 struct TriResult {
   bool hit, exact;
