@@ -203,7 +203,11 @@ void ThreadMultiprocessor::run() {
           schedule.set(index, at);
           break;
         }
-        if (at != 0) sync_to(at, others, true);
+        if (at != 0) {
+          sync_to(at, others, true);
+          tp.begun = true;
+          tp.begun_at = at;
+        }
       }
       if (sampler_.enabled()) sampler_.count_measured(window, t);
       if (!step(tp)) {
@@ -306,7 +310,8 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   const Cycle fetch_ready = tp.fetched ? tp.fetch_ready : fetch(tp, tp.hart.pc());
   tp.fetched = false;
   const bool memory_like = tp.timing.is_memory(*d);
-  const Cycle earliest = memory_like ? tp.timing.begin_memory(*d, fetch_ready) : 0;
+  const Cycle earliest = !memory_like ? 0 : tp.begun ? tp.begun_at : tp.timing.begin_memory(*d, fetch_ready);
+  tp.begun = false;
   const iss::Decoded decoded = *d;  // the hart may rewrite the code image (self-modifying code)
   tp.memory.record().clear();
   current_ = &tp;

@@ -30,6 +30,10 @@ struct ThreadMultiprocessor::Tp {
   // time order issues; it may then wait for its operands); its answer is kept for the step.
   bool fetched = false;
   transport::Cycle fetch_ready = 0;
+  // The same for the op's issue gate (TpTiming::begin_memory): set just before the step that
+  // sends it, which then reuses the answer instead of asking again.
+  bool begun = false;
+  transport::Cycle begun_at = 0;
 };
 
 }  // namespace strata::chip
