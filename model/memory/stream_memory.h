@@ -81,6 +81,9 @@ class StreamMemory : public sc_core::sc_module {
   std::vector<Bank> banks_;  // never resized (the stats point into it)
   std::vector<std::unique_ptr<stats::Group>> bank_stats_;
   transport::CountedPair<Counters> counters_;
+  // Rays stored and taken over the whole frame, fast-forward included: the rays fix them, so
+  // they are exact in every timing mode. Only refused pushes and empty pops depend on timing.
+  uint64_t rays_pushed_ = 0, rays_popped_ = 0;
   stats::Group stats_;
   std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;
