@@ -49,6 +49,17 @@ struct WarmLog {
     last = ~uint64_t{0};
   }
   void forget() { std::fill(known.begin(), known.end(), 0); }
+  // The same entries as one note(a, 4, store) per aligned word of [addr, addr + bytes): with
+  // no skipped range overlapping the block, those are the block's lines in order.
+  void note_words(uint32_t addr, uint32_t bytes, bool store) {
+    const uint64_t end = uint64_t{addr} + bytes;
+    for (int r = 0; r < 2; ++r)
+      if (skip_lo[r] < end && addr < skip_hi[r]) {
+        for (uint64_t a = addr; a < end; a += 4) note(static_cast<uint32_t>(a), 4, store);
+        return;
+      }
+    note(addr, bytes, store);
+  }
   void note(uint32_t addr, uint32_t bytes, bool store) {
     for (int r = 0; r < 2; ++r)
       if (addr >= skip_lo[r] && addr < skip_hi[r]) return;
@@ -80,6 +91,15 @@ class TpMemory {
     backing_->read(addr, &value, N);
     record_.note(addr, N, false);
     if (warm_ != nullptr) warm_->note(addr, N, false);
+    return true;
+  }
+  // n aligned words (flat_memory.h): all of them, or none and false.
+  bool load_words(uint32_t addr, uint32_t* out, unsigned n) {
+    const uint32_t bytes = 4 * n;
+    if (n == 0 || addr < low_ || uint64_t{addr} + bytes > high_) return false;
+    backing_->read(addr, out, bytes);
+    record_.note(addr, bytes, false);
+    if (warm_ != nullptr) warm_->note_words(addr, bytes, false);
     return true;
   }
   template <unsigned N>

@@ -6,6 +6,11 @@
 //   template <unsigned N> bool load(uint32_t addr, uint32_t& value);   // N = 1, 2, 4; zero-extended
 //   template <unsigned N> bool store(uint32_t addr, uint32_t value);   // low N bytes
 // returning false for an access fault. Alignment is checked by the hart beforehand.
+// Optionally, a policy may also provide
+//   bool load_words(uint32_t addr, uint32_t* out, unsigned n);  // n aligned words, all or none
+// which the hart uses for a STRaTA op's memory operands (a box, a triangle, a ray) when it
+// returns true, and which must then have the effect of the n single-word loads in order. On
+// false the hart falls back to single words, which find the faulting word for the trap.
 #pragma once
 
 #include <cstddef>

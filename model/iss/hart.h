@@ -75,6 +75,7 @@ class Hart {
   bool fs_enabled() const { return (mstatus_ & mstatus::kFs) != 0; }
   Outcome after_store(uint32_t addr, RunResult& stop);
   Outcome exec_strata(const Decoded& d, uint32_t pc, uint32_t& cause, uint32_t& tval, RunResult& stop);
+  bool load_words(uint32_t addr, uint32_t* out, unsigned n);  // false: load word by word
 
   CodeImage* code_;
   Memory* mem_;
