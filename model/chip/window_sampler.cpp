@@ -38,7 +38,10 @@ uint64_t WindowSampler::min_period() const {
 }
 
 // Never sparser than configured: a target met early must not leave the rest of the frame unsampled.
-uint64_t WindowSampler::max_period() const { return config_.timing.sample_period_cycles; }
+uint64_t WindowSampler::max_period(double remaining_cycles) const {
+  const double spread = std::max(0.0, remaining_cycles) / kMinWindowsLeft;
+  return std::max<uint64_t>(config_.timing.sample_period_cycles, static_cast<uint64_t>(spread));
+}
 
 void WindowSampler::run() {
   const sc_core::sc_time cycle(1.0 / config_.clock_ghz, sc_core::SC_NS);
@@ -59,6 +62,8 @@ void WindowSampler::run() {
     windows_.emplace_back(weight * (cycles - last_cycles_), weight * (instructions - last_instructions_));
     last_cycles_ = cycles;
     last_instructions_ = instructions;
+    weight_sum_ += weight;
+    weight_square_sum_ += weight * weight;
     if (config_.timing.sample_target_error > 0) retarget(at);
   }
 }
@@ -88,15 +93,29 @@ void WindowSampler::retarget(uint64_t now) {
   if (!(fraction > 0.02)) return;  // too early to tell how long the frame is
   const double relative = relative_half_width();
   if (!(relative > 0)) return;
-  // The half-width shrinks as 1 / sqrt(windows): the frame needs n (hw / target)^2 of them.
-  const double target = config_.timing.sample_target_error;
-  const double needed = double(windows_.size()) * (relative / target) * (relative / target);
+  // In units of the first period: a window of weight w stands for w periods, and its measured
+  // counts, whose spread does not depend on w, are scaled by w. So the frame total's variance
+  // grows as the sum of w^2 and the total as the sum of w. If the windows to come all have
+  // weight W, they cover the remaining R periods with R / W windows and add R W to the sum of
+  // squares, so the frame's half-width will be relative * (covered / frame) *
+  // sqrt((S2 + R W) / S2), with covered = sum w and S2 = sum w^2 so far. For the target:
+  // W = S2 ((target frame / (relative covered))^2 - 1) / R. With equal weights this is the
+  // 1/sqrt(windows) rule; it also says how far the windows may thin out once the target is in
+  // reach, and the period grows (max_period) as well as shrinks.
+  // Planned to a little inside the target: the half-width so far is itself an estimate, from
+  // at most 32 batches (a relative standard error of about 1 / sqrt(2 x 31) = 13%), and a plan
+  // that aims at the target exactly misses it about half the time.
+  const double target = kPlanningMargin * config_.timing.sample_target_error;
+  const double base = double(config_.timing.sample_period_cycles);
   const double frame = double(now) / std::min(1.0, fraction);
   const double remaining_cycles = std::max(0.0, frame - double(now));
-  const double remaining_windows = std::max(1.0, needed - double(windows_.size()));
-  const double chosen = remaining_cycles / remaining_windows;
+  const double remaining = remaining_cycles / base;
+  const double gain = target * (frame / base) / (relative * weight_sum_);
+  const double weight = remaining > 0 ? weight_square_sum_ * (gain * gain - 1.0) / remaining : 0.0;
+  const double chosen = std::max(0.0, weight) * base;
   const uint64_t period =
-      std::clamp<uint64_t>(static_cast<uint64_t>(chosen), min_period(), std::max(min_period(), max_period()));
+      std::clamp<uint64_t>(static_cast<uint64_t>(std::min(chosen, 1e18)), min_period(),
+                           std::max(min_period(), max_period(remaining_cycles)));
   // From the next window on: no TM has reached it yet.
   const uint64_t current = schedule_.window_of(now);
   schedule_.change_period(schedule_.next_window(current), period);

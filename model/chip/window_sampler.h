@@ -5,9 +5,10 @@
 //
 // With an error target (timing.sample_target_error), the sampler also chooses the period: after
 // a pilot of kPilotWindows windows at the configured period, at every window it estimates the
-// frame-cycle interval from the windows so far, how many windows the whole frame needs for the
-// target (the half-width shrinks as 1 / sqrt(windows)), and how long the frame will be (from
-// the share of pixels done), and sets the period of the windows to come accordingly.
+// frame-cycle interval from the windows so far and how long the frame will be (from the share
+// of pixels done), and sets the period of the windows to come to the longest that still
+// brings the frame's interval to the target: shorter than the configured one when the target
+// needs more windows, longer when it needs fewer.
 #pragma once
 
 #include <functional>
@@ -44,7 +45,12 @@ class WindowSampler : public sc_core::sc_module {
   // The shortest period the schedule may take: the detailed window, and on each side of the
   // sampler's wake-up a margin no TM runs ahead of global time by.
   uint64_t min_period() const;
-  uint64_t max_period() const;
+  // The longest: the configured period, or, once the target is met with room, as long as
+  // leaves the rest of the frame (`remaining_cycles`, projected) kMinWindowsLeft windows, so a
+  // sparse stretch never skips the frame's drain or a change of phase unsampled.
+  uint64_t max_period(double remaining_cycles) const;
+  static constexpr double kMinWindowsLeft = 32;
+  static constexpr double kPlanningMargin = 0.85;  // plans for 85% of the target (retarget)
 
  private:
   void run();
@@ -61,6 +67,7 @@ class WindowSampler : public sc_core::sc_module {
   // Per window: its measured cycles and measured instructions (for the error target).
   std::vector<std::pair<double, double>> windows_;
   double last_cycles_ = 0, last_instructions_ = 0;
+  double weight_sum_ = 0, weight_square_sum_ = 0;  // of the windows so far
 };
 
 }  // namespace strata::chip

@@ -147,8 +147,30 @@ TEST_P(SampledTiming, EstimatesCarryIntervalsAndATighterTargetTimesMore) {
   EXPECT_EQ(loose["rays"], tight["rays"]);
   EXPECT_GT(tight["sampling"]["timed_instructions"].get<double>(), 1.2 * loose["sampling"]["timed_instructions"].get<double>());
   EXPECT_GT(tight["sampling"]["period_changes"].get<int>(), 0);
-  EXPECT_LT(tight["sampling"]["last_period_cycles"].get<double>(), 24000.0);  // never sparser than asked
+  EXPECT_LT(tight["sampling"]["last_period_cycles"].get<double>(), 24000.0);
+  // About 44 periods of 24,000 cycles: too few left to spread over for the loose target to
+  // thin them out further (WindowSampler::max_period keeps 32 windows for the rest).
   EXPECT_LE(loose["sampling"]["last_period_cycles"].get<double>(), 24000.0);
+}
+
+// A target within easy reach thins the windows out past the configured period (here 6,000
+// cycles, about 180 windows on this frame), and the frame's interval still meets the target.
+TEST_P(SampledTiming, ATargetWithinReachTimesLessThanTheConfiguredPeriod) {
+  TempDir dir;
+  const nlohmann::json fixed = run_frame(dir, GetParam(), "sampled", "-fixed");
+  const nlohmann::json thin = run_frame(dir, GetParam(), "sampled", "-thin", " --set timing.sample_target_error=0.2");
+  ASSERT_FALSE(fixed.is_null() || thin.is_null());
+  EXPECT_EQ(thin["rays"], fixed["rays"]);
+  const double fixed_timed = fixed["sampling"]["timed_instructions"].get<double>();
+  EXPECT_LT(thin["sampling"]["timed_instructions"].get<double>(), 0.6 * fixed_timed);
+  EXPECT_LT(thin["sampling"]["windows"].get<double>(), 0.6 * fixed["sampling"]["windows"].get<double>());
+  const double cycles = thin["frame"]["cycles"].get<double>();
+  const double half_width = thin["intervals"]["stats"]["frame"]["cycles"]["half_width"].get<double>();
+  EXPECT_GT(half_width, 0.0);
+  EXPECT_LE(half_width / cycles, 0.2);
+  // Both estimate the same frame: within the two intervals of each other.
+  const double fixed_half_width = fixed["intervals"]["stats"]["frame"]["cycles"]["half_width"].get<double>();
+  EXPECT_LE(std::abs(cycles - fixed["frame"]["cycles"].get<double>()), half_width + fixed_half_width);
 }
 
 std::string design_name(const ::testing::TestParamInfo<const char*>& p) {
