@@ -34,24 +34,9 @@ struct Effect {
   std::vector<uint64_t> entries;
 };
 
-Effect by_words(uint32_t addr, unsigned n, const WarmLog& start) {
-  SparseMemory m;
-  fill(m);
-  TpMemory mem(m, kLow, kHigh);
-  WarmLog log = start;
-  mem.set_warm_log(&log);
-  Effect e;
-  for (unsigned i = 0; i < n; ++i) {
-    uint32_t v = 0;
-    EXPECT_TRUE(mem.load<4>(addr + 4 * i, v));
-    e.words.push_back(v);
-  }
-  e.record = mem.record();
-  e.entries = log.entries;
-  return e;
-}
-
-Effect by_block(uint32_t addr, unsigned n, const WarmLog& start) {
+// Loads n words from addr on a fresh memory, word by word or as one block, and returns what
+// that did.
+Effect run_load(uint32_t addr, unsigned n, const WarmLog& start, bool block) {
   SparseMemory m;
   fill(m);
   TpMemory mem(m, kLow, kHigh);
@@ -59,11 +44,17 @@ Effect by_block(uint32_t addr, unsigned n, const WarmLog& start) {
   mem.set_warm_log(&log);
   Effect e;
   e.words.assign(n, 0);
-  EXPECT_TRUE(mem.load_words(addr, e.words.data(), n));
+  if (block) {
+    EXPECT_TRUE(mem.load_words(addr, e.words.data(), n));
+  } else {
+    for (unsigned i = 0; i < n; ++i) EXPECT_TRUE(mem.load<4>(addr + 4 * i, e.words[i]));
+  }
   e.record = mem.record();
   e.entries = log.entries;
   return e;
 }
+Effect by_words(uint32_t addr, unsigned n, const WarmLog& start) { return run_load(addr, n, start, false); }
+Effect by_block(uint32_t addr, unsigned n, const WarmLog& start) { return run_load(addr, n, start, true); }
 
 void expect_same(const Effect& a, const Effect& b) {
   EXPECT_EQ(a.words, b.words);
