@@ -38,8 +38,8 @@ uint64_t WindowSampler::min_period() const {
 }
 
 // Never sparser than configured: a target met early must not leave the rest of the frame unsampled.
-uint64_t WindowSampler::max_period(double remaining_cycles) const {
-  const double spread = std::max(0.0, remaining_cycles) / kMinWindowsLeft;
+uint64_t WindowSampler::max_period(double frame_cycles) const {
+  const double spread = std::max(0.0, frame_cycles) / kMinWindows;
   return std::max<uint64_t>(config_.timing.sample_period_cycles, static_cast<uint64_t>(spread));
 }
 
@@ -101,7 +101,7 @@ void WindowSampler::retarget(uint64_t now) {
   // sqrt((S2 + R W) / S2), with covered = sum w and S2 = sum w^2 so far. For the target:
   // W = S2 ((target frame / (relative covered))^2 - 1) / R. With equal weights this is the
   // 1/sqrt(windows) rule; it also says how far the windows may thin out once the target is in
-  // reach, and the period grows (max_period) as well as shrinks.
+  // reach, and the period grows (up to max_period) as well as shrinks.
   // Planned to a little inside the target: the half-width so far is itself an estimate, from
   // at most 32 batches (a relative standard error of about 1 / sqrt(2 x 31) = 13%), and a plan
   // that aims at the target exactly misses it about half the time.
@@ -115,7 +115,7 @@ void WindowSampler::retarget(uint64_t now) {
   const double chosen = std::max(0.0, weight) * base;
   const uint64_t period =
       std::clamp<uint64_t>(static_cast<uint64_t>(std::min(chosen, 1e18)), min_period(),
-                           std::max(min_period(), max_period(remaining_cycles)));
+                           std::max(min_period(), max_period(frame)));
   // From the next window on: no TM has reached it yet.
   const uint64_t current = schedule_.window_of(now);
   schedule_.change_period(schedule_.next_window(current), period);
