@@ -1,5 +1,6 @@
 #include "sim/iss_render.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -25,6 +26,10 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   footprint.treelet_bytes = image.header().treelet_bytes;
   footprint.pixels = settings.width * settings.height;
   footprint.threads = 1;
+  // A streaming kernel keeps one path record per ray the stream memory holds (chip.cpp does
+  // the same for the chip); without them it starts no path and waits for pixels forever.
+  const iss::FunctionalStrataHook::Config hook_config;
+  footprint.path_slots = std::min(hook_config.stream_capacity, std::max(footprint.pixels, 1u));
   const uint64_t data_bytes = chip::frame_layout_bytes(footprint);
   if (data_bytes > 0xC0000000ull)
     throw std::runtime_error("iss render: scene image and frame do not fit the 32-bit guest address space");
@@ -39,7 +44,7 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   const kernels::BootBlock boot = chip::boot_block(g);
   program.memory.write(*boot_addr, &boot, sizeof boot);
 
-  iss::FunctionalStrataHook hook;  // one hart: thread 0 of TM 0; global registers start at 0
+  iss::FunctionalStrataHook hook(hook_config);  // one hart: thread 0 of TM 0; global registers start at 0
   iss::Hart<iss::FlatMemory> hart(program.code, program.memory, &hook);
   iss::prepare_hart(hart, program);
   const auto t0 = std::chrono::steady_clock::now();

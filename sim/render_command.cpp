@@ -33,7 +33,7 @@ struct RenderOptions {
 };
 
 const char* engine_description(const std::string& engine) {
-  return engine == "iss" ? "functional, untimed: the baseline firmware on one RV32IMF ISS hart"
+  return engine == "iss" ? "functional, untimed: a firmware kernel (baseline unless --firmware) on one RV32IMF ISS hart"
                          : "functional, untimed: the baseline kernel on one host thread";
 }
 
