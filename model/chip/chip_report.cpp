@@ -286,10 +286,12 @@ std::string FrameReport::summary() const {
   if (v.has("sampling")) {
     const stats::Values& sm = v.group("sampling");
     const double timed = sm.number("timed_instructions");
-    s += format("sampling       %.1f%% of instructions timed (%llu of every %llu cycles, %llu warm-up); memory "
+    // With an error target the period moves (the target line says where it ended).
+    s += format("sampling       %.1f%% of instructions timed (%llu of every %llu cycles%s, %llu warm-up); memory "
                 "figures extrapolated x%.2f, XU x%.2f [sampled]\n",
                 retired > 0 ? 100.0 * timed / retired : 0.0, ull(sm.count("detail_cycles")),
-                ull(sm.count("period_cycles")), ull(sm.count("warmup_cycles")),
+                ull(sm.count("period_cycles")), sm.count("period_changes") > 0 ? " at first" : "",
+                ull(sm.count("warmup_cycles")),
                 sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
     if (!interval_note_.empty())
       s += format("warning        %s\n", interval_note_.c_str());
