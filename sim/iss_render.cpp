@@ -1,6 +1,5 @@
 #include "sim/iss_render.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -26,10 +25,10 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   footprint.treelet_bytes = image.header().treelet_bytes;
   footprint.pixels = settings.width * settings.height;
   footprint.threads = 1;
-  // A streaming kernel keeps one path record per ray the stream memory holds (chip.cpp does
-  // the same for the chip); without them it starts no path and waits for pixels forever.
+  // Path records for a streaming kernel, planned as on the chip: without them it starts no
+  // path and waits for pixels forever.
   const iss::FunctionalStrataHook::Config hook_config;
-  footprint.path_slots = std::min(hook_config.stream_capacity, std::max(footprint.pixels, 1u));
+  footprint.path_slots = chip::path_slots_for(hook_config.stream_capacity, footprint.pixels);
   const uint64_t data_bytes = chip::frame_layout_bytes(footprint);
   if (data_bytes > 0xC0000000ull)
     throw std::runtime_error("iss render: scene image and frame do not fit the 32-bit guest address space");

@@ -103,8 +103,7 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   f.treelet_bytes = in.treelet_bytes;
   f.pixels = pixels_;
   f.threads = config_.threads();
-  f.path_slots =
-      config_.design.streams ? std::min(memory::make_stream_layout(config_.stream).capacity, std::max(pixels_, 1u)) : 0u;
+  f.path_slots = config_.design.streams ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, pixels_) : 0u;
   layout_ = plan_frame_layout(stacks_end, f);
   layout_.code_begin = code_begin;
   layout_.code_end = elf_end;

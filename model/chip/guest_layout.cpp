@@ -1,5 +1,6 @@
 #include "model/chip/guest_layout.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,10 @@ namespace strata::chip {
 using transport::DataClass;
 
 uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+
+uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels) {
+  return std::min(stream_capacity_rays, std::max(pixels, 1u));
+}
 
 GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f) {
   GuestLayout g;

@@ -31,6 +31,10 @@ struct GuestLayout {
 
 uint64_t align_up(uint64_t v, uint64_t alignment);
 
+// Path records a streaming kernel gets: one per ray the stream memory holds, and no more than
+// the frame's pixels (at least one). The chip and the one-hart ISS render both plan with it.
+uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels);
+
 // The data above `base`. Throws std::runtime_error when it leaves the 32-bit address space.
 GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f);
 // Bytes plan_frame_layout can need above any base (alignment slack included).

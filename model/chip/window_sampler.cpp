@@ -37,7 +37,8 @@ uint64_t WindowSampler::min_period() const {
   return t.sample_detail_cycles + std::max<uint64_t>(gap, 2ull * t.quantum_cycles);
 }
 
-// Never sparser than configured: a target met early must not leave the rest of the frame unsampled.
+// Never sparser than configured, nor than a 32nd of the frame: a target met early must not leave
+// a long stretch of the frame unsampled.
 uint64_t WindowSampler::max_period(double frame_cycles) const {
   const double spread = std::max(0.0, frame_cycles) / kMinWindows;
   return std::max<uint64_t>(config_.timing.sample_period_cycles, static_cast<uint64_t>(spread));
