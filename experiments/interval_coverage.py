@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """How often does the loosely-timed value lie inside sampled timing's 95% interval?
 
-    experiments/interval_coverage.py [--out out/validate-intervals]
+    experiments/interval_coverage.py [--out out/validate-intervals] [--sampled NAME]
 
 Reads the results of the sweep specs experiments/specs/intervals-lt.json, intervals-sampled.json
 and (optionally) intervals-sampled-cold.json, which run the same frames (3 scenes x 3 designs
@@ -9,7 +9,9 @@ x 2 seeds) loosely timed, sampled, and sampled without functional warming. Print
 and metric, the sampled estimate's error against LT and its 95% half-width, then the coverage
 (the share of frames whose LT value lies inside the interval) and how wide the intervals are
 next to the errors; with the cold runs, the bias before and after functional warming. Writes
-the same as coverage.csv in the output folder. Standard library only."""
+the same as coverage.csv in the output folder. --sampled NAME compares the sampled runs in
+NAME/ instead of sampled/ (e.g. sampled-batch16k, from intervals-sampled-batch16k.json) and
+writes coverage-NAME.csv. Standard library only."""
 import argparse
 import csv
 import json
@@ -52,11 +54,12 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "out",
                                                   "validate-intervals"))
+    ap.add_argument("--sampled", default="sampled", help="the folder of the sampled runs, under --out")
     a = ap.parse_args()
-    lt, sampled, cold = (load(os.path.join(a.out, n)) for n in ("lt", "sampled", "sampled-cold"))
+    lt, sampled, cold = (load(os.path.join(a.out, n)) for n in ("lt", a.sampled, "sampled-cold"))
     if not lt or not sampled:
         sys.exit(f"interval_coverage: run the specs first (scripts/strata-sweep experiments/specs/intervals-lt.json "
-                 f"and intervals-sampled.json); no results under {a.out}")
+                 f"and intervals-{a.sampled}.json); no results under {a.out}/lt and {a.out}/{a.sampled}")
     rows, inside, total, ratios = [], {}, {}, {}
     for key in sorted(set(lt) & set(sampled)):
         ref, est = lt[key], sampled[key]
@@ -74,7 +77,8 @@ def main():
             rows.append({"design": key[0], "scene": key[1], "res": key[2], "seed": key[3], "metric": label,
                          "lt": r, "sampled": e, "error": err, "relative error": err / r if r else 0.0,
                          "half width": hw, "relative half width": hw / abs(e) if e else 0.0, "inside": ok})
-    with open(os.path.join(a.out, "coverage.csv"), "w", newline="") as f:
+    name = "coverage.csv" if a.sampled == "sampled" else f"coverage-{a.sampled}.csv"
+    with open(os.path.join(a.out, name), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
@@ -96,13 +100,17 @@ def main():
                              f"{'' if r['inside'] else ' **out**'}")
         print(f"| {d} | {s} | {seed} | " + " | ".join(cells) + " |")
     print()
-    print("| metric | LT inside the 95% interval | median abs(error) / half-width |")
-    print("|---|---|---|")
+    print("| metric | LT inside the 95% interval | median abs(error) / half-width | mean error | mean abs(error) |")
+    print("|---|---|---|---|---|")
     for _, label in METRICS:
         if label in total:
             rs = sorted(ratios.get(label, [0.0]))
+            # Relative errors, but points for the hit rate (a ratio already).
+            key, unit = ("error", " pt") if label == "L1 hit rate" else ("relative error", "%")
+            errs = [100 * r[key] for r in rows if r["metric"] == label]
             print(f"| {label} | {inside[label]} of {total[label]} ({100 * inside[label] / total[label]:.0f}%) | "
-                  f"{rs[len(rs) // 2]:.2f} |")
+                  f"{rs[len(rs) // 2]:.2f} | {sum(errs) / len(errs):+.2f}{unit} | "
+                  f"{sum(abs(e) for e in errs) / len(errs):.2f}{unit} |")
     if cold:
         print()
         print("Bias against LT before (cold) and after (warm) functional warming, seed 1:")

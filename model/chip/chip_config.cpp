@@ -93,6 +93,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
   b.bind("timing.functional_warming", &timing.functional_warming);
+  b.bind("timing.fast_forward_batch_quanta", &timing.fast_forward_batch_quanta);
   b.bind("timing.sample_target_error", &timing.sample_target_error);
 
   auto& tp = tm.tp;
@@ -188,6 +189,8 @@ void ChipConfig::finalize() {
   require(timing.quantum_cycles >= 1 && timing.quantum_cycles <= 65536,
           "timing.quantum_cycles: must be 1..65536, got " + std::to_string(timing.quantum_cycles));
   require(timing.tp_slack_cycles <= 256, "timing.tp_slack_cycles: at most 256 (the XU calendars remember 512 cycles)");
+  require(timing.fast_forward_batch_quanta >= 1 && timing.fast_forward_batch_quanta <= 64,
+          "timing.fast_forward_batch_quanta: must be 1..64, got " + std::to_string(timing.fast_forward_batch_quanta));
   require(timing.sample_target_error == 0.0 ||
               (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +

@@ -113,6 +113,12 @@ void Chip::register_stats() {
     s.level("warm_requests", sum(&TmCounters::warm_requests), Unit::kCount,
             "Warming requests the fast-forward sent: its loads and stores by L1 line, less runs of accesses to one "
             "line and loads of lines the L1 is known to hold (they would change nothing).");
+    s.level("fast_forward_batch_cycles",
+            [this] { return uint64_t{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles; },
+            Unit::kCycles, "How far past its TM's runner-up TP one fast-forward batch of a TP may run.");
+    s.level("fast_forward_batches", sum(&TmCounters::fast_forward_batches), Unit::kCount,
+            "Fast-forward batches run: each is one TP's instructions until the batch's cycles are spent or the TP "
+            "halts.");
     s.derived("fast_forward_instructions", Unit::kCount, "Instructions run functionally (retired - timed).",
               [](const Scope& x) {
                 return x.root().number("instructions.retired") - x.self().number("timed_instructions");

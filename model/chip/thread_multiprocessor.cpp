@@ -9,12 +9,6 @@
 
 namespace strata::chip {
 
-namespace {
-// How far past the runner-up a fast-forward batch may run, in quanta: longer batches spread
-// the cost of switching TPs over more instructions.
-constexpr transport::Cycle kFastForwardQuanta = 4;
-}  // namespace
-
 using transport::AccessClass;
 using transport::Cycle;
 using transport::MemoryExtension;
@@ -168,11 +162,11 @@ void ThreadMultiprocessor::run() {
     if (sampler_.enabled()) {
       window = sampler_.window_of(start);
       if (!sampler_.detailed(start)) {
-        // Fast-forward: batches of up to kFastForwardQuanta quanta past the runner-up, never
-        // into the next detailed window. Nothing is booked, so running that far ahead only
-        // reorders stream operations between TMs, which the kernels are built to tolerate.
+        // Fast-forward: batches of up to timing.fast_forward_batch_quanta past the runner-up,
+        // never into the next detailed window. Nothing is booked, so running that far ahead
+        // only reorders stream operations between TMs, which the kernels are built to tolerate.
         const Cycle next_window = sampler_.next_window(window);
-        const Cycle ahead = kFastForwardQuanta * Cycle{config_.timing.quantum_cycles};
+        const Cycle ahead = Cycle{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles;
         const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());

@@ -86,6 +86,7 @@ struct TmCounters {
   uint64_t global_register_ops = 0;
   uint64_t forced_reconfigurations = 0;  // fused ops that found the TM in another mode
   uint64_t warm_requests = 0;  // sampled, functional warming: L1 lines replayed as tag updates
+  uint64_t fast_forward_batches = 0;  // sampled: functional batches run (one TP each)
   transport::Cycle finished_cycle = 0;
 };
 

@@ -27,10 +27,13 @@ double WindowSampler::model_cycles(const stats::Values& v) {
 }
 
 uint64_t WindowSampler::min_period() const {
-  // When the sampler wakes, halfway through the fast-forward, a TM may be ahead of global time
-  // by its quantum and a fast-forward batch (4 quanta) and a TP slack. It must not have begun
-  // the next window's measured part: half the fast-forward plus the next warm-up must exceed
-  // that lead. Two quanta at least, so that a fast-forward happens at all.
+  // When the sampler wakes, halfway through the fast-forward, no TM may have begun the next
+  // window's measured part: half the fast-forward plus the next warm-up must exceed a TM's lead
+  // on global time. A TM enters a window only when its earliest TP does, and that TP is within
+  // a quantum of global time (a fast-forward batch runs the others ahead, but never into the
+  // window), so the lead is a quantum and a TP slack; the margin of 5 quanta was sized when a
+  // batch was thought to add 4 and is kept. Two quanta at least, so that a fast-forward
+  // happens at all.
   const auto& t = config_.timing;
   const uint64_t ahead = 5ull * t.quantum_cycles + 2ull * t.tp_slack_cycles;
   const uint64_t gap = ahead > t.sample_warmup_cycles ? 2 * (ahead - t.sample_warmup_cycles) : 0;

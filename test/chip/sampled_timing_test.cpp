@@ -177,6 +177,28 @@ TEST_P(SampledTiming, ATargetWithinReachTimesLessThanTheConfiguredPeriod) {
   EXPECT_LE(std::abs(cycles - fixed["frame"]["cycles"].get<double>()), half_width + fixed_half_width);
 }
 
+// A fast-forward batch runs one TP until it is timing.fast_forward_batch_quanta past its TM's
+// runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that knob trades); they compute
+// the same rays, and the frame estimate stays where the shorter batches put it.
+TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
+  TempDir dir;
+  const nlohmann::json short_batches =
+      run_frame(dir, GetParam(), "sampled", "-short", " --set timing.fast_forward_batch_quanta=1");
+  const nlohmann::json long_batches =
+      run_frame(dir, GetParam(), "sampled", "-long", " --set timing.fast_forward_batch_quanta=4");
+  ASSERT_FALSE(short_batches.is_null() || long_batches.is_null());
+  const auto& ss = short_batches["sampling"];
+  const auto& ls = long_batches["sampling"];
+  EXPECT_EQ(ss["fast_forward_batch_cycles"], 500);
+  EXPECT_EQ(ls["fast_forward_batch_cycles"], 2000);
+  EXPECT_EQ(long_batches["rays"], short_batches["rays"]);  // and both equal the twin's (--check)
+  EXPECT_GT(ls["fast_forward_instructions"].get<double>(), 0.2 * long_batches["instructions"]["retired"].get<double>());
+  EXPECT_GT(ss["fast_forward_batches"].get<double>(), 0.0);
+  EXPECT_LT(ls["fast_forward_batches"].get<double>(), 0.5 * ss["fast_forward_batches"].get<double>());
+  const double short_cycles = short_batches["frame"]["cycles"].get<double>();
+  EXPECT_NEAR(long_batches["frame"]["cycles"].get<double>() / short_cycles, 1.0, 0.10);
+}
+
 std::string design_name(const ::testing::TestParamInfo<const char*>& p) {
   return std::string(p.param) == "trax" ? "trax" : "pipelines";
 }
