@@ -108,6 +108,8 @@ void Chip::register_stats() {
             "Times the error target changed the sampling period.");
     s.level("last_period_cycles", [this] { return schedule_ ? schedule_->period_at(report_cycle_) : uint64_t{0}; },
             Unit::kCycles, "The period at the frame's end (the configured one unless an error target changed it).");
+    s.level("min_period_cycles", [this] { return sampler_ ? sampler_->min_period() : uint64_t{0}; },
+            Unit::kCycles, "The shortest period an error target may choose (0: no sampler).");
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },
             Unit::kCount, "1: fast-forward loads and stores kept the L1 data and L2 tags current.");
     s.level("warm_requests", sum(&TmCounters::warm_requests), Unit::kCount,

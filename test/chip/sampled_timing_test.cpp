@@ -177,6 +177,25 @@ TEST_P(SampledTiming, ATargetWithinReachTimesLessThanTheConfiguredPeriod) {
   EXPECT_LE(std::abs(cycles - fixed["frame"]["cycles"].get<double>()), half_width + fixed_half_width);
 }
 
+// A target the frame cannot reach drives the period down to the shortest the sampler allows,
+// and the summary says the target was missed and why (the frame ended first).
+TEST_P(SampledTiming, AnUnreachableTargetIsReportedAsMissed) {
+  TempDir dir;
+  const nlohmann::json j = run_frame(dir, GetParam(), "sampled", "-unreachable", " --set timing.sample_target_error=0.001");
+  ASSERT_FALSE(j.is_null());
+  const auto& s = j["sampling"];
+  EXPECT_GT(s["min_period_cycles"].get<double>(), s["detail_cycles"].get<double>());
+  EXPECT_EQ(s["last_period_cycles"], s["min_period_cycles"]);
+  const double reached = j["intervals"]["stats"]["frame"]["cycles"]["relative"].get<double>();
+  EXPECT_GT(reached, 0.001);
+  const std::string summary = read_text(dir.path() / "log.txt");
+  EXPECT_NE(summary.find("warning        the error target was not met: frame cycles \u00b1 0.1% asked"),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("the shortest allowed): use timing.mode=lt"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("target         frame cycles"), std::string::npos) << summary;
+}
+
 // A fast-forward batch runs one TP until it is timing.fast_forward_batch_quanta past its TM's
 // runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that knob trades); they compute
 // the same rays, and the frame estimate stays where the shorter batches put it.
