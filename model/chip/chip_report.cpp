@@ -307,19 +307,22 @@ std::string FrameReport::summary() const {
         s += format("target         frame cycles \u00b1 %.1f%% asked, \u00b1 %.2f%% reached; the period ended at %llu "
                     "cycles after %llu change(s) [sampled]\n",
                     100 * target, 100 * got, ull(sm.count("last_period_cycles")), ull(sm.count("period_changes")));
-      else if (sm.count("last_period_cycles") <= sm.count("min_period_cycles"))
-        s += format("warning        the error target was not met: frame cycles \u00b1 %.1f%% asked, %s reached; the "
-                    "frame ended before enough windows were measured (the period was %llu cycles at the end, the "
-                    "shortest allowed): use timing.mode=lt for this frame, or accept the wider interval\n",
-                    100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval",
-                    ull(sm.count("last_period_cycles")));
-      else  // the sampler still had room to shorten the period: its last plan expected the target
-        s += format("warning        the error target was not met: frame cycles \u00b1 %.1f%% asked, %s reached; the "
-                    "sampler's last plan expected it met (the period was %llu cycles at the end, above the shortest "
-                    "allowed, %llu), but the frame's final interval came out wider: run again with a tighter "
-                    "target, or accept the wider interval\n",
-                    100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval",
-                    ull(sm.count("last_period_cycles")), ull(sm.count("min_period_cycles")));
+      else {
+        // Why: the period reached its shortest (the frame ended first), or the sampler still had
+        // room to shorten it, so its last plan expected the target met.
+        const uint64_t last = sm.count("last_period_cycles"), shortest = sm.count("min_period_cycles");
+        const std::string why =
+            last <= shortest
+                ? format("the frame ended before enough windows were measured (the period was %llu cycles at the "
+                         "end, the shortest allowed): use timing.mode=lt for this frame, or accept the wider interval",
+                         ull(last))
+                : format("the sampler's last plan expected it met (the period was %llu cycles at the end, above the "
+                         "shortest allowed, %llu), but the frame's final interval came out wider: run again with a "
+                         "tighter target, or accept the wider interval",
+                         ull(last), ull(shortest));
+        s += format("warning        the error target was not met: frame cycles \u00b1 %.1f%% asked, %s reached; %s\n",
+                    100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval", why.c_str());
+      }
     }
   }
   return s;

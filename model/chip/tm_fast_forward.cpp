@@ -72,7 +72,7 @@ iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   // once its time passes its end (a TP spinning on stream operations would overshoot).
   // One named result and one return, so that execute_op builds it in the caller's slot: with
   // a second return the result was copied out of a temporary with wide loads of narrow,
-  // just-written stores, a store-forwarding stall per STRaTA op (4-5% of a fast-forward).
+  // just-written stores, a store-forwarding stall per STRaTA op (about 4% of a fast-forward).
   const bool batch = sampler_.in_batch();
   if (batch) request_cycle_ = sampler_.batch_cycle(call.retired_in_run);
   iss::HookResult result = execute_op(call);

@@ -197,8 +197,9 @@ TEST_P(SampledTiming, AnUnreachableTargetIsReportedAsMissed) {
 }
 
 // A fast-forward batch runs one TP until it is timing.fast_forward_batch_quanta past its TM's
-// runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that knob trades); they compute
-// the same rays, and the frame estimate stays where the shorter batches put it.
+// runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that
+// knob trades); they compute the same rays, and the frame estimate stays where the shorter
+// batches put it.
 TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
   TempDir dir;
   const nlohmann::json short_batches =
