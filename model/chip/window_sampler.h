@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 #include <systemc>
 
 #include "model/chip/chip_config.h"
@@ -53,6 +54,20 @@ class WindowSampler : public sc_core::sc_module {
   uint64_t max_period(double frame_cycles) const;
   static constexpr double kMinWindows = 32;
   static constexpr double kPlanningMargin = 0.85;  // plans for 85% of the target (retarget)
+  static constexpr size_t kRecentWindows = 8;      // whose spread predicts the windows to come
+
+  // One window's measured counts (its measured part, not scaled by its weight) and weight.
+  struct Window {
+    double weight, cycles, instructions;
+  };
+  // The error target's plan needs the spread the windows to come will add. A window's
+  // contribution to the frame-cycle estimate's variance is weight^2 x residual^2, its residual
+  // being its measured cycles less the cycles its instructions take at the ratio so far. This
+  // returns the windows' sum of weight^2 x residual^2 over the mean residual^2 of the last
+  // `recent`: for windows of one spread it is the sum of weight^2 they would have under the
+  // old rule; when the spread has fallen since the frame's start (cold caches, the first
+  // rays), it is larger, and the period may grow sooner.
+  static double spread_weight(const std::vector<Window>& windows, size_t recent);
 
  private:
   void run();
@@ -66,10 +81,9 @@ class WindowSampler : public sc_core::sc_module {
   const stats::Group& root_;
   Progress progress_;
   stats::BatchMeans batches_;
-  // Per window: its measured cycles and measured instructions (for the error target).
-  std::vector<std::pair<double, double>> windows_;
+  std::vector<Window> windows_;  // for the error target
   double last_cycles_ = 0, last_instructions_ = 0;
-  double weight_sum_ = 0, weight_square_sum_ = 0;  // of the windows so far
+  double weight_sum_ = 0;  // of the windows so far
 };
 
 }  // namespace strata::chip
