@@ -56,7 +56,10 @@ void WindowSampler::run() {
     const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
     const uint64_t now = static_cast<uint64_t>(sc_core::sc_time_stamp() / cycle + 0.5);
     if (at > now) sc_core::wait(cycle * double(at - now));
-    if (progress_.done()) return;  // the frame ended in this period: the report takes its tail
+    if (progress_.done()) {  // the frame ended in this period: the report takes its tail
+      batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      return;
+    }
     stats::Values cumulative = stats::Values::snapshot(root_);
     // A window stands for its period of the frame: weighted against the first period.
     const double weight = double(period) / double(config_.timing.sample_period_cycles);
@@ -117,6 +120,12 @@ double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t r
   return past / last;
 }
 
+double WindowSampler::tail_weight(const SamplingSchedule& schedule, uint64_t frame_end, uint64_t base_period) {
+  const uint64_t start = schedule.window_of(frame_end);
+  const uint64_t span = std::min(frame_end - start, schedule.period_at(start));
+  return double(span) / double(base_period);
+}
+
 void WindowSampler::retarget(uint64_t now) {
   if (windows_.size() < kPilotWindows) return;
   const double fraction = progress_.fraction();
@@ -154,6 +163,7 @@ void WindowSampler::retarget(uint64_t now) {
   // From the next window on: no TM has reached it yet.
   const uint64_t current = schedule_.window_of(now);
   schedule_.change_period(schedule_.next_window(current), period);
+  // Until the frame ends (run() then weighs the tail by what is left of the frame).
   batches_.set_tail_weight(double(period) / double(config_.timing.sample_period_cycles));
 }
 

@@ -30,6 +30,7 @@ class WindowSampler : public sc_core::sc_module {
   struct Progress {
     std::function<bool()> done;        // the frame has finished
     std::function<double()> fraction;  // share of the frame's pixels finished, 0..1
+    std::function<uint64_t()> end;     // the frame's last cycle, once done() holds
   };
   SC_HAS_PROCESS(WindowSampler);
   WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
@@ -68,6 +69,11 @@ class WindowSampler : public sc_core::sc_module {
   // old rule; when the spread has fallen since the frame's start (cold caches, the first
   // rays), it is larger, and the period may grow sooner.
   static double spread_weight(const std::vector<Window>& windows, size_t recent);
+  // The weight of the frame's tail, the window the frame ended in: it stands for the cycles
+  // from its start to the frame's end, not for a whole period (a frame that ends a few cycles
+  // into a 1.2 M-cycle period would otherwise weigh its drain, where few TPs still run, as a
+  // whole period). In units of `base_period`.
+  static double tail_weight(const SamplingSchedule& schedule, uint64_t frame_end, uint64_t base_period);
 
  private:
   void run();

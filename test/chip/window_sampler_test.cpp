@@ -57,3 +57,19 @@ TEST(WindowSampler, RecentWindowsOnTheRatioPlanAsForEqualSpreads) {
 }
 
 }  // namespace
+
+namespace {
+
+// The window the frame ends in stands for the cycles from its start to the frame's end.
+TEST(WindowSampler, TheTailWindowStandsForWhatIsLeftOfTheFrame) {
+  strata::chip::TimingConfig t;  // period 100,000 cycles
+  strata::chip::SamplingSchedule schedule(t);
+  EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 250000, t.sample_period_cycles), 0.5);
+  EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 299999, t.sample_period_cycles), 0.99999);
+  schedule.change_period(300000, 1200000);  // the error target thinned the windows out
+  EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 310000, t.sample_period_cycles), 0.1);
+  EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 1499999, t.sample_period_cycles), 11.99999);
+  EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 1600000, t.sample_period_cycles), 1.0);
+}
+
+}  // namespace
