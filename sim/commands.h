@@ -24,5 +24,6 @@ void add_render_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_stats_reference_command(CLI::App& app);
+void add_arithmetic_error_command(CLI::App& app);
 
 }  // namespace strata::sim

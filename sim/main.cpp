@@ -17,6 +17,7 @@ int sc_main(int argc, char** argv) {
   strata::sim::add_trace_command(app);
   strata::sim::add_run_command(app);
   strata::sim::add_stats_reference_command(app);
+  strata::sim::add_arithmetic_error_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -84,7 +84,10 @@ RenderResult render_native(const scenes::SceneImage& image, const RenderSettings
   const kernels::KernelContext ctx{kernels::SceneView(image.bytes()), &frame, result.image.data(),
                                    &result.counters};
   const auto t0 = std::chrono::steady_clock::now();
-  kernels::baseline_kernel(machine, ctx);
+  if (settings.path_arithmetic == PathArithmetic::kPacked)
+    kernels::baseline_kernel<kernels::PackedPathArithmetic>(machine, ctx);
+  else
+    kernels::baseline_kernel<kernels::ExactPathArithmetic>(machine, ctx);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

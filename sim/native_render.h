@@ -11,11 +11,17 @@
 
 namespace strata::sim {
 
+// How a path keeps its throughput and radiance between rays (firmware/kernels/path_shading.h):
+// exact floats (TRaX, and STRaTA with a path record), or packed into the ray (STRaTA's compact
+// path state). The native twin of a design computes with that design's arithmetic.
+enum class PathArithmetic { kExact, kPacked };
+
 struct RenderSettings {
   uint32_t width = 512, height = 512;
   uint32_t samples_per_pixel = 1;
   uint32_t max_path_vertices = 5;
   uint32_t seed = 1;
+  PathArithmetic path_arithmetic = PathArithmetic::kExact;
 };
 
 struct RenderResult {

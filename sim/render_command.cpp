@@ -28,6 +28,7 @@ struct RenderOptions {
   std::string out_dir = "out/render";
   std::string dump_rays;  // ray file of every traced ray, for replay in other tracers
   std::string engine = "native";
+  std::string path_arithmetic = "exact";  // native: exact, or packed (the compact path state's twin)
   std::string firmware;  // kernel ELF for --engine iss; default: the one this tree built
   uint64_t max_instructions = UINT64_MAX;
 };
@@ -52,6 +53,7 @@ nlohmann::json stats_json(const RenderOptions& o, const RenderResult& r, const I
   j["samples_per_pixel"] = o.settings.samples_per_pixel;
   j["max_path_vertices"] = o.settings.max_path_vertices;
   j["seed"] = o.settings.seed;
+  j["path_arithmetic"] = o.path_arithmetic;
   j["paths"] = c.paths;
   const char* names[] = {"primary", "bounce", "shadow"};
   for (uint32_t t : {kPrimaryRay, kBounceRay, kShadowRay})
@@ -105,6 +107,11 @@ void run_render(RenderOptions o) {
     throw std::invalid_argument("engine: '" + o.engine + "' is not native or iss");
   if (o.engine == "iss" && !o.dump_rays.empty())
     throw std::invalid_argument("dump-rays: only the native engine records rays");
+  if (o.path_arithmetic != "exact" && o.path_arithmetic != "packed")
+    throw std::invalid_argument("path-arithmetic: '" + o.path_arithmetic + "' is not exact or packed");
+  if (o.engine == "iss" && o.path_arithmetic != "exact")
+    throw std::invalid_argument("path-arithmetic: the iss engine runs a firmware, whose kernel fixes its arithmetic");
+  o.settings.path_arithmetic = o.path_arithmetic == "packed" ? PathArithmetic::kPacked : PathArithmetic::kExact;
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
   if (!(o.exposure > 0.0f)) throw std::invalid_argument("exposure: must be positive");
@@ -155,6 +162,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--out", opts->out_dir, "output folder")->capture_default_str();
   cmd->add_option("--engine", opts->engine,
                   "native: the kernel compiled for the host (native twin); iss: the RISC-V firmware on one ISS hart")
+      ->capture_default_str();
+  cmd->add_option("--path-arithmetic", opts->path_arithmetic,
+                  "native: how paths keep throughput and radiance, exact floats or packed (the twin of "
+                  "design.path_state=compact)")
       ->capture_default_str();
   cmd->add_option("--firmware", opts->firmware, "kernel ELF for --engine iss (default: the baseline kernel built here)");
   cmd->add_option("--max-instructions", opts->max_instructions, "stop the ISS after this many instructions");

@@ -62,7 +62,8 @@ std::set<std::string> detail_axes(const std::vector<std::string>& asked) {
 // The kernel each design runs (firmware/kernels/<name>_main.cpp).
 std::string kernel_for(const chip::ChipConfig& c) {
   if (!c.design.streams) return "baseline";
-  return c.design.pipelines ? "streams_pipelines" : "streams";
+  const std::string base = c.design.pipelines ? "streams_pipelines" : "streams";
+  return c.design.path_state == chip::PathStatePlacement::kCompact ? base + "_compact" : base;
 }
 
 void run_frame(RunOptions o) {
@@ -138,7 +139,11 @@ void run_frame(RunOptions o) {
   if (interrupted)
     throw Interrupted("interrupted: partial image and statistics written to " + dir.string(), progress.signal());
   if (o.check) {
-    const RenderResult twin = render_native(loaded.image, o.settings);
+    // The twin computes with the design's path arithmetic: packed where the rays carry it.
+    RenderSettings twin_settings = o.settings;
+    if (config.design.streams && config.design.path_state == chip::PathStatePlacement::kCompact)
+      twin_settings.path_arithmetic = PathArithmetic::kPacked;
+    const RenderResult twin = render_native(loaded.image, twin_settings);
     const kernels::RayCounters chip_rays = chip.ray_counters();
     const bool same_image =
         std::memcmp(twin.image.data(), image.data(), image.size() * sizeof(kernels::Pixel)) == 0;

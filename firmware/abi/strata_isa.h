@@ -40,6 +40,10 @@
 #define STRATA_STREAM_PUSH 1     /* push ray at x[rs1] to treelet x[rs2]; rd = 1, or 0 if full */
 #define STRATA_STREAM_POP 2      /* pop from the TM's buffer to x[rs1]; rd = 1, or 0 if empty */
 #define STRATA_STREAM_ASSIGN 3   /* rd = the TM's treelet, or STRATA_NO_TREELET */
+/* The same for a stream memory with 64-byte entries (the compact path state): a ray that
+   carries its path's state. An entry width the stream memory was not built with traps. */
+#define STRATA_STREAM_PUSH64 4
+#define STRATA_STREAM_POP64 5
 
 #define STRATA_F3_CONTROL 7
 #define STRATA_CONTROL_HALT 0 /* the thread stops */
@@ -66,6 +70,8 @@
 #define STRATA_NO_TREELET 0xFFFFFFFFu
 #define STRATA_STREAM_RAY_BYTES 48 /* one queued ray, opaque to the stream memory */
 #define STRATA_STREAM_RAY_WORDS 12
+#define STRATA_STREAM_RAY64_BYTES 64 /* one queued ray with its path's state (compact) */
+#define STRATA_STREAM_RAY64_WORDS 16
 #define STRATA_PIPE_RAY_WORDS 11 /* origin, tmin, direction, tmax, inverse direction */
 #define STRATA_PIPE_BOX_WORDS 6
 #define STRATA_PIPE_TRIANGLE_WORDS 9
@@ -95,6 +101,10 @@ typedef struct strata_pipe_triangle {
 typedef struct strata_stream_ray {
   uint32_t words[STRATA_STREAM_RAY_WORDS];
 } strata_stream_ray;
+
+typedef struct strata_stream_ray64 {
+  uint32_t words[STRATA_STREAM_RAY64_WORDS];
+} strata_stream_ray64;
 
 /* ---- Intrinsics (RISC-V only; a host build supplies same-named functional versions) ---- */
 #if defined(__riscv)
@@ -186,6 +196,26 @@ static inline uint32_t strata_stream_pop(strata_stream_ray* ray) {
   __asm__ volatile(".insn r %2, %3, %4, %0, %5, x0"
                    : "=r"(rd), "=m"(*ray)
                    : "i"(STRATA_OPCODE_THREAD), "i"(STRATA_F3_STREAM), "i"(STRATA_STREAM_POP),
+                     "r"(ray)
+                   : "memory");
+  return rd;
+}
+
+static inline uint32_t strata_stream_push64(const strata_stream_ray64* ray, uint32_t treelet) {
+  uint32_t rd;
+  __asm__ volatile(".insn r %1, %2, %3, %0, %4, %5"
+                   : "=r"(rd)
+                   : "i"(STRATA_OPCODE_THREAD), "i"(STRATA_F3_STREAM), "i"(STRATA_STREAM_PUSH64),
+                     "r"(ray), "r"(treelet), "m"(*ray)
+                   : "memory");
+  return rd;
+}
+
+static inline uint32_t strata_stream_pop64(strata_stream_ray64* ray) {
+  uint32_t rd;
+  __asm__ volatile(".insn r %2, %3, %4, %0, %5, x0"
+                   : "=r"(rd), "=m"(*ray)
+                   : "i"(STRATA_OPCODE_THREAD), "i"(STRATA_F3_STREAM), "i"(STRATA_STREAM_POP64),
                      "r"(ray)
                    : "memory");
   return rd;

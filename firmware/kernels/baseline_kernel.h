@@ -29,33 +29,33 @@ struct CountingObserver {
 };
 
 // One sample of one pixel, traced to the end of its path.
-template <class Machine>
+template <class Arithmetic, class Machine>
 inline Vec3f trace_sample(Machine& machine, const KernelContext& ctx, uint32_t pixel,
                           uint32_t sample_index) {
   const FrameParams& f = *ctx.frame;
   const uint32_t root = ctx.scene.header().root_node;
   CountingObserver obs;
-  PathState path = start_path(f, sample_index);
-  TraceRay ray = camera_ray(f, pixel, path.rng);
+  PathState path = start_path(sample_index);
+  TraceRay ray = camera_ray(f, pixel, sample_index);
   uint32_t type = kPrimaryRay;
   for (;;) {
     ++ctx.counters->rays[type];
     machine.ray_issued(ray, type);
     const ClosestHit hit = trace_closest(ctx.scene, root, ray, obs);
     if (!hit.hit) {
-      shade_miss(ctx.scene, &path);
+      shade_miss<Arithmetic>(ctx.scene, &path);
       break;
     }
     ++ctx.counters->hits[type];
     const HitShading s =
-        shade_hit(ctx.scene, f, ray, hit, ctx.scene.triangle(hit.triangle_offset), &path);
+        shade_hit<Arithmetic>(ctx.scene, f, ray, hit, ctx.scene.triangle(hit.triangle_offset), &path);
     if (s.has_shadow_ray) {
       ++ctx.counters->rays[kShadowRay];
       machine.ray_issued(s.shadow_ray, kShadowRay);
       if (trace_any(ctx.scene, root, s.shadow_ray, obs).hit)
         ++ctx.counters->hits[kShadowRay];
       else
-        path.radiance = path.radiance + s.shadow_radiance;
+        add_radiance<Arithmetic>(&path, shadow_contribution(ctx.scene, s.weight, s.geometry));
     }
     if (!s.has_bounce_ray) break;
     ray = s.bounce_ray;
@@ -71,7 +71,9 @@ inline Vec3f trace_sample(Machine& machine, const KernelContext& ctx, uint32_t p
 // traced by the thread that took it, so the pixel's sum has a fixed order. The thread counts
 // rays in its own local memory (its stack) and writes the totals out once at the end, as
 // hardware event counters would, so statistics add no traffic to the caches.
-template <class Machine>
+// Arithmetic: how a path keeps throughput and radiance (path_shading.h). The TRaX firmware keeps
+// them exact; the native twin of a design with the compact path state keeps them packed.
+template <class Arithmetic = ExactPathArithmetic, class Machine>
 inline void baseline_kernel(Machine& machine, const KernelContext& shared) {
   RayCounters counters = {};
   KernelContext ctx = shared;
@@ -84,7 +86,7 @@ inline void baseline_kernel(Machine& machine, const KernelContext& shared) {
     if (pixel >= pixels) break;
     Vec3f sum{0.0f, 0.0f, 0.0f};
     for (uint32_t s = 0; s < f.samples_per_pixel; ++s)
-      sum = sum + trace_sample(machine, ctx, pixel, pixel * f.samples_per_pixel + s);
+      sum = sum + trace_sample<Arithmetic>(machine, ctx, pixel, pixel * f.samples_per_pixel + s);
     const Vec3f avg = sum * inv_spp;
     ctx.framebuffer[pixel] = {{avg.x, avg.y, avg.z}};
   }

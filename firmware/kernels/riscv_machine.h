@@ -5,7 +5,7 @@
 #include "firmware/abi/boot_block.h"
 #include "firmware/kernels/baseline_kernel.h"
 #include "firmware/kernels/stream_ray.h"
-#include "firmware/kernels/streams_kernel.h"
+#include "firmware/kernels/streams_compact_paths.h"
 
 namespace strata::kernels {
 
@@ -18,6 +18,10 @@ struct RiscvMachine {
     return strata_stream_push(reinterpret_cast<const strata_stream_ray*>(r), treelet) != 0;
   }
   bool stream_pop(StreamRay* r) { return strata_stream_pop(reinterpret_cast<strata_stream_ray*>(r)) != 0; }
+  bool stream_push(const CompactRay* r, uint32_t treelet) {
+    return strata_stream_push64(reinterpret_cast<const strata_stream_ray64*>(r), treelet) != 0;
+  }
+  bool stream_pop(CompactRay* r) { return strata_stream_pop64(reinterpret_cast<strata_stream_ray64*>(r)) != 0; }
   uint32_t stream_assign() { return strata_stream_assign(); }
   void ray_issued(const TraceRay&, uint32_t) {}
 };
@@ -28,11 +32,6 @@ inline KernelContext kernel_context(const BootBlock& boot, uint32_t thread) {
           reinterpret_cast<const FrameParams*>(boot.frame_params),
           reinterpret_cast<Pixel*>(boot.framebuffer),
           reinterpret_cast<RayCounters*>(boot.counters) + thread};
-}
-
-// A streaming kernel's inputs: the kernel's, and the path table.
-inline StreamsContext streams_context(const BootBlock& boot, uint32_t thread) {
-  return {kernel_context(boot, thread), reinterpret_cast<PathRecord*>(boot.path_table), boot.path_slots};
 }
 
 }  // namespace strata::kernels

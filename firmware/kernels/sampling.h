@@ -18,12 +18,14 @@ inline uint32_t hash32(uint32_t x) {
   return x;
 }
 
-// Counter-based stream: every path draws from its own sequence, which depends only on the
-// frame seed and the path's sample index, never on which thread or in what order it runs.
+// Counter-based stream: every path vertex draws from its own sequence, which depends only on
+// the frame seed, the path's sample index and the vertex, never on which thread or in what
+// order it runs, nor on what was drawn before. So no random state travels with a path: a
+// kernel that keeps a path's state in its ray (the compact path state) re-derives it.
 class PathRng {
  public:
-  PathRng(uint32_t seed, uint32_t sample_index)
-      : state_(hash32(sample_index ^ hash32(seed ^ 0x5bd1e995u))) {}
+  PathRng(uint32_t seed, uint32_t sample_index, uint32_t vertex)
+      : state_(hash32(hash32(sample_index ^ hash32(seed ^ 0x5bd1e995u)) + vertex * 0x9e3779b9u)) {}
   uint32_t next_u32() {
     state_ = state_ * 747796405u + 2891336453u;  // 32-bit LCG, permuted as in PCG-RXS-M-XS
     uint32_t w = ((state_ >> ((state_ >> 28u) + 4u)) ^ state_) * 277803737u;

@@ -1,7 +1,8 @@
 // The 48-byte ray the stream memory holds (ARCHITECTURE.md, "Ray stream memory"): origin and
-// direction (24 B), the traversal state (20 B) and the bit stack (4 B). A ray carries its path
-// slot; everything else the path needs (throughput, radiance, random state, the pending bounce
-// ray) stays in the path table in DRAM, read only when the ray completes.
+// direction (24 B), the traversal state (20 B) and the bit stack (4 B). Its meta word keeps 24
+// bits for the path: the record-per-path kernels (streams_record_paths.h) put the path's slot
+// in the path table there; the compact kernel (streams_compact_paths.h) its vertex count and a
+// flag, and carries the rest of the path's state in 16 more bytes (CompactRay).
 #pragma once
 
 #include <stdint.h>
@@ -19,14 +20,14 @@ struct StreamRay {
   uint32_t stack;         // the traversal bit stack
   uint32_t pending;       // leaf reference, or the child a return comes from
   uint32_t hit_triangle;
-  uint32_t meta;          // path slot (bits 8..31), ray type (6..7), phase (1..5), leaf side (0)
+  uint32_t meta;          // path tag (bits 8..31), ray type (6..7), phase (1..5), leaf side (0)
 };
 static_assert(sizeof(StreamRay) == 48, "a stream ray is 48 bytes");
 
-inline uint32_t ray_slot(const StreamRay& r) { return r.meta >> 8; }
+inline uint32_t ray_tag(const StreamRay& r) { return r.meta >> 8; }
 inline uint32_t ray_type(const StreamRay& r) { return (r.meta >> 6) & 3u; }
 
-inline StreamRay make_stream_ray(const TraceRay& ray, uint32_t type, uint32_t slot, uint32_t root) {
+inline StreamRay make_stream_ray(const TraceRay& ray, uint32_t type, uint32_t tag, uint32_t root) {
   const TraversalState s = start_traversal(root, ray);
   StreamRay r;
   r.origin[0] = ray.origin.x; r.origin[1] = ray.origin.y; r.origin[2] = ray.origin.z;
@@ -36,7 +37,7 @@ inline StreamRay make_stream_ray(const TraceRay& ray, uint32_t type, uint32_t sl
   r.stack = s.stack;
   r.pending = s.pending;
   r.hit_triangle = s.hit_triangle;
-  r.meta = (slot << 8) | (type << 6) | (s.phase << 1) | s.leaf_side;
+  r.meta = (tag << 8) | (type << 6) | (s.phase << 1) | s.leaf_side;
   return r;
 }
 

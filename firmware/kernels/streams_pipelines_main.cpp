@@ -1,60 +1,13 @@
-// RISC-V entry of the STRaTA "streams + pipelines" kernel: the streams kernel, with every box
-// test on the fused box pipeline and every triangle test on the fused triangle pipeline. A TP
-// configures its TM for the kind of treelet it works on (box on node treelets, triangle on
-// triangle treelets); shading runs on the XUs left general.
-#include "firmware/kernels/riscv_machine.h"
-#include "firmware/kernels/streams_kernel.h"
+// RISC-V entry of the STRaTA "streams_pipelines" kernel: the streams kernel with every box test on
+// the fused box pipeline and every triangle test on the fused triangle pipeline; path state in one
+// record per path (design.path_state = on-chip or dram).
+#include "firmware/kernels/fused_pipelines.h"
+#include "firmware/kernels/streams_entry.h"
 
-using namespace strata;
 using namespace strata::kernels;
 
 extern "C" {
 __attribute__((used, section(".data"))) BootBlock strata_boot = {0, 0, 0, 0, 0, 0, {0, 0}};
 }
 
-namespace {
-
-// The fused pipelines as traverse.h's Tests policy. The pipelines compute intersect.h's
-// functions, so the decisions are those of SoftwareTests, bit for bit.
-struct FusedTests {
-  void begin(const TraceRay& ray, float tmax) {
-    const Vec3f inv = inverse_direction(ray.dir);
-    const strata_pipe_ray r = {{ray.origin.x, ray.origin.y, ray.origin.z}, ray.tmin,
-                               {ray.dir.x, ray.dir.y, ray.dir.z}, tmax,
-                               {inv.x, inv.y, inv.z}, 0.0f};
-    strata_load_ray(&r);
-  }
-  void set_tmax(float tmax) { strata_set_tmax(tmax); }
-  bool box(const BvhNode& n, int side, float* t_entry) const {
-    if (child_is_leaf(n.child[side]) && leaf_count(n.child[side]) == 0) return false;
-    strata_load_box(reinterpret_cast<const strata_pipe_box*>(n.child_box[side]));
-    return strata_box_test(t_entry) != 0;
-  }
-  bool triangle(const TriangleRecord& tri, const TraceRay&, TriangleHit* hit) const {
-    strata_load_triangle(reinterpret_cast<const strata_pipe_triangle*>(tri.v0));
-    if (!strata_triangle_test()) return false;
-    strata_triangle_divide(&hit->t, &hit->b1, &hit->b2);
-    return true;
-  }
-};
-
-struct FusedPipelines {
-  int mode = -1;  // 0 box, 1 triangle
-  void enter_treelet(bool triangles) {
-    const int wanted = triangles ? 1 : 0;
-    if (wanted == mode) return;
-    if (triangles) strata_pipe_triangle_mode(); else strata_pipe_box_mode();
-    mode = wanted;
-  }
-  FusedTests tests() const { return FusedTests(); }
-};
-
-}  // namespace
-
-int main() {
-  const BootBlock boot = strata_boot;
-  RiscvMachine machine;
-  FusedPipelines pipelines;
-  streams_kernel(machine, pipelines, streams_context(boot, strata_thread_id()));
-  return 0;
-}
+int main() { return streams_entry<RecordPaths, FusedPipelines>(strata_boot); }

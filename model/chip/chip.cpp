@@ -57,6 +57,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.stacks_base = static_cast<uint32_t>(layout_.stacks);
   env.data_classes = &data_classes_;
   env.path_state_on_chip = config_.design.streams && config_.design.path_state == PathStatePlacement::kOnChip;
+  env.stream_ray_bytes = config_.stream.ray_bytes;
   env.path_begin = layout_.path_table;
   env.path_end = layout_.path_table + uint64_t{layout_.path_slots} * kernels::kPathRecordBytes;
   env.report_cycle = &report_cycle_;
@@ -104,7 +105,9 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   f.treelet_bytes = in.treelet_bytes;
   f.pixels = pixels_;
   f.threads = config_.threads();
-  f.path_slots = config_.design.streams ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, pixels_) : 0u;
+  f.path_slots = config_.design.streams && config_.design.path_state != PathStatePlacement::kCompact
+                     ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, pixels_)
+                     : 0u;
   layout_ = plan_frame_layout(stacks_end, f);
   layout_.code_begin = code_begin;
   layout_.code_end = elf_end;

@@ -79,7 +79,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);
   b.bind("design.streams", &design.streams);
   b.bind("design.pipelines", &design.pipelines);
-  b.bind_enum("design.path_state", &design.path_state, {"on-chip", "dram"});
+  b.bind_enum("design.path_state", &design.path_state, {"compact", "on-chip", "dram"});
   b.bind("clock_ghz", &clock_ghz);
   b.bind("tms", &tms);
   b.bind("tps_per_tm", &tps_per_tm);
@@ -213,7 +213,9 @@ void ChipConfig::finalize() {
   tm.tps = tps_per_tm;
   stream.tms = tms;
   stream.threads = threads();
-  // Path records on chip take their bytes from the stream memory, one per ray it can hold.
+  // The compact path state rides in a 64-byte ray; path records on chip take their bytes from
+  // the stream memory, one per ray it can hold.
+  stream.ray_bytes = design.streams && design.path_state == PathStatePlacement::kCompact ? 64u : 48u;
   stream.path_record_bytes =
       design.streams && design.path_state == PathStatePlacement::kOnChip ? kernels::kPathRecordBytes : 0;
   // Each TM binds its L1 data cache, its L1 instruction cache and its stream port.

@@ -17,9 +17,13 @@
 namespace strata::chip {
 
 // Where the streaming kernels keep what a path needs between its rays (throughput, radiance,
-// random state, the pending bounce: one PathRecord per path in flight).
+// its sample, the pending bounce; docs/path-state.md).
 enum class PathStatePlacement : uint8_t {
-  // In a region carved from the stream memory's SRAM beside the rays (ARCHITECTURE.md: ray
+  // In the ray itself: a 64-byte stream entry carries its path's state, with throughput and
+  // radiance packed (firmware/kernels/streams_compact_paths.h). One ray per path in flight, so
+  // the stream memory's whole capacity is paths. The paper's budget (48 B per ray) plus 16 B.
+  kCompact,
+  // A 96-byte record per path, in a region carved from the stream memory's SRAM beside the rays (ARCHITECTURE.md: ray
   // state never leaves the chip). Its loads and stores go to the stream memory through the
   // interconnect, take its ports and cost its energy per access; the ray capacity shrinks by
   // the records' bytes. Never in the L1, L2 or DRAM.
@@ -38,7 +42,7 @@ struct DesignConfig {
   std::string name = "strata-pipelines";
   bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)
   bool pipelines = true;  // fused box/triangle pipelines (else: general-purpose XUs only)
-  PathStatePlacement path_state = PathStatePlacement::kOnChip;  // streaming designs only
+  PathStatePlacement path_state = PathStatePlacement::kCompact;  // streaming designs only
 };
 
 struct TimingConfig {

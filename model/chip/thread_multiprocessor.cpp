@@ -392,6 +392,8 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
     case iss::Op::kStStreamCapacity:
     case iss::Op::kStStreamPush:
     case iss::Op::kStStreamPop:
+    case iss::Op::kStStreamPush64:
+    case iss::Op::kStStreamPop64:
     case iss::Op::kStStreamAssign: return execute_stream(call);
     default: return tp.pipe.execute(call);  // pipeline configuration, inputs and fused tests
   }
@@ -405,10 +407,21 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
     result.message = "stream memory operations need a design with streams (design.streams)";
     return result;
   }
+  // A push or pop moves one entry: the instruction's width must be the stream memory's.
+  const uint32_t ray_bytes = iss::stream_ray_bytes(call.op);
+  if (ray_bytes != 0 && ray_bytes != env_.stream_ray_bytes) {
+    result.status = iss::HookStatus::kIllegal;
+    result.message = env_.stream_ray_bytes == 64
+                         ? "a 48-byte stream push/pop, but the stream memory holds 64-byte rays "
+                           "(design.path_state=compact runs the *_compact kernels)"
+                         : "a 64-byte stream push/pop, but the stream memory holds 48-byte rays "
+                           "(the *_compact kernels need design.path_state=compact)";
+    return result;
+  }
   MemoryExtension ext;
-  uint8_t scratch[48] = {};
+  uint8_t scratch[64] = {};
   if (counting()) ++counters_.stream_requests;
-  if (call.op == iss::Op::kStStreamPush || call.op == iss::Op::kStStreamPop) {
+  if (ray_bytes != 0) {
     ++counters_.stream_moves_all;
     if (counting()) ++counters_.stream_moves;
   }
@@ -420,18 +433,20 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       result.dest[0] = ext.result;
       break;
     case iss::Op::kStStreamPush:
-      std::memcpy(scratch, call.in, 48);
-      hook_ready_ = transact(stream_port, AccessClass::kStreamPush, 0, scratch, 48, request_cycle_, false,
+    case iss::Op::kStStreamPush64:
+      std::memcpy(scratch, call.in, ray_bytes);
+      hook_ready_ = transact(stream_port, AccessClass::kStreamPush, 0, scratch, ray_bytes, request_cycle_, false,
                              call.rs2, tp, &ext);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
       break;
     case iss::Op::kStStreamPop:
-      hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, 48, request_cycle_, false,
+    case iss::Op::kStStreamPop64:
+      hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, request_cycle_, false,
                              transport::kNoTreelet, tp, &ext);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (result.dest[0]) {
-        std::memcpy(call.out, scratch, 48);
+        std::memcpy(call.out, scratch, ray_bytes);
         result.status = iss::HookStatus::kStore;
       }
       break;

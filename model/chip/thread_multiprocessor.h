@@ -62,6 +62,7 @@ struct TmEnvironment {
   const transport::DataClassMap* data_classes = nullptr;  // what each data address holds (may be null)
   // On-chip path state: loads and stores to [path_begin, path_end) go to the stream memory.
   bool path_state_on_chip = false;
+  uint32_t stream_ray_bytes = 48;  // one stream entry's ray: 48, or 64 with the compact path state
   uint64_t path_begin = 0, path_end = 0;
   // Sampled timing: where the detailed windows fall (null in the other modes).
   const SamplingSchedule* schedule = nullptr;

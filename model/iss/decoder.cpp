@@ -55,6 +55,8 @@ Op decode_custom0(uint32_t f3, uint32_t f7) {
         case STRATA_STREAM_PUSH: return Op::kStStreamPush;
         case STRATA_STREAM_POP: return Op::kStStreamPop;
         case STRATA_STREAM_ASSIGN: return Op::kStStreamAssign;
+        case STRATA_STREAM_PUSH64: return Op::kStStreamPush64;
+        case STRATA_STREAM_POP64: return Op::kStStreamPop64;
       }
       break;
     case STRATA_F3_CONTROL:

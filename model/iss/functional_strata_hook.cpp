@@ -53,6 +53,8 @@ HookResult FunctionalStrataHook::execute(const HookCall& call) {
     case Op::kStStreamCapacity:
     case Op::kStStreamPush:
     case Op::kStStreamPop:
+    case Op::kStStreamPush64:
+    case Op::kStStreamPop64:
     case Op::kStStreamAssign: return stream(call);
     default: return pipeline(call);
   }
@@ -93,18 +95,29 @@ HookResult FunctionalStrataHook::pipeline(const HookCall& call) {
 HookResult FunctionalStrataHook::stream(const HookCall& call) {
   switch (call.op) {
     case Op::kStStreamCapacity: return ok(config_.stream_capacity);
-    case Op::kStStreamPush: {
+    case Op::kStStreamPush:
+    case Op::kStStreamPush64: {
       if (rays_queued_ >= config_.stream_capacity) return ok(0);
-      StreamRay ray;
-      std::memcpy(ray.data(), call.in, sizeof ray);
+      StreamRay ray{};
+      ray.bytes = stream_ray_bytes(call.op);
+      std::memcpy(ray.words.data(), call.in, ray.bytes);
       buffers_[call.rs2].push_back(ray);
       ++rays_queued_;
       return ok(1);
     }
-    case Op::kStStreamPop: {
+    case Op::kStStreamPop:
+    case Op::kStStreamPop64: {
       auto it = buffers_.find(current_treelet_);
       if (it == buffers_.end() || it->second.empty()) return ok(0);
-      std::memcpy(call.out, it->second.back().data(), sizeof(StreamRay));
+      const StreamRay& ray = it->second.back();
+      if (ray.bytes != stream_ray_bytes(call.op)) {
+        HookResult r;
+        r.status = HookStatus::kIllegal;
+        r.message = ray.bytes == STRATA_STREAM_RAY_BYTES ? "a 64-byte stream pop of a 48-byte ray"
+                                                          : "a 48-byte stream pop of a 64-byte ray";
+        return r;
+      }
+      std::memcpy(call.out, ray.words.data(), ray.bytes);
       it->second.pop_back();
       --rays_queued_;
       HookResult r = ok(1);

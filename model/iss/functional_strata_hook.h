@@ -1,6 +1,7 @@
 // A functional implementation of the STRaTA extension for a standalone hart: fixed ids,
 // an array of global registers, the reference pipelines, and a stream memory of LIFO
-// per-treelet buffers with a ray capacity. No timing, one TM.
+// per-treelet buffers with a ray capacity. No timing, one TM. The buffers hold rays of either
+// entry width (48 B, or 64 B with push64/pop64): a pop must name the width of the ray it takes.
 #pragma once
 
 #include "model/iss/fused_pipeline_backend.h"
@@ -39,7 +40,10 @@ class FunctionalStrataHook : public StrataHook {
 
  private:
   enum class Mode { kGeneral, kBox, kTriangle };
-  using StreamRay = std::array<uint32_t, STRATA_STREAM_RAY_WORDS>;
+  struct StreamRay {
+    std::array<uint32_t, STRATA_STREAM_RAY64_WORDS> words;
+    unsigned bytes;
+  };
 
   HookResult pipeline(const HookCall& call);
   HookResult stream(const HookCall& call);

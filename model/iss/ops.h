@@ -143,6 +143,8 @@ enum class Format : uint8_t {
   X(kStStreamPush, "strata.streampush", kStrataStream, kOperands, "Xxx-", 0)    \
   X(kStStreamPop, "strata.streampop", kStrataStream, kOperands, "Xx--", 0)      \
   X(kStStreamAssign, "strata.streamassign", kStrataStream, kOperands, "X---", 0) \
+  X(kStStreamPush64, "strata.streampush64", kStrataStream, kOperands, "Xxx-", 0) \
+  X(kStStreamPop64, "strata.streampop64", kStrataStream, kOperands, "Xx--", 0)   \
   X(kStHalt, "strata.halt", kStrataControl, kNone, "----", 0)                   \
   X(kStPipeGeneral, "strata.pipe.general", kStrataPipeConfig, kNone, "----", 0) \
   X(kStPipeBox, "strata.pipe.box", kStrataPipeConfig, kNone, "----", 0)         \

@@ -10,10 +10,27 @@ unsigned strata_mem_in_words(Op op) {
     case Op::kStLoadBox: return STRATA_PIPE_BOX_WORDS;
     case Op::kStLoadTriangle: return STRATA_PIPE_TRIANGLE_WORDS;
     case Op::kStStreamPush: return STRATA_STREAM_RAY_WORDS;
+    case Op::kStStreamPush64: return STRATA_STREAM_RAY64_WORDS;
     default: return 0;
   }
 }
 
-unsigned strata_mem_out_words(Op op) { return op == Op::kStStreamPop ? STRATA_STREAM_RAY_WORDS : 0; }
+unsigned strata_mem_out_words(Op op) {
+  switch (op) {
+    case Op::kStStreamPop: return STRATA_STREAM_RAY_WORDS;
+    case Op::kStStreamPop64: return STRATA_STREAM_RAY64_WORDS;
+    default: return 0;
+  }
+}
+
+unsigned stream_ray_bytes(Op op) {
+  switch (op) {
+    case Op::kStStreamPush:
+    case Op::kStStreamPop: return STRATA_STREAM_RAY_BYTES;
+    case Op::kStStreamPush64:
+    case Op::kStStreamPop64: return STRATA_STREAM_RAY64_BYTES;
+    default: return 0;
+  }
+}
 
 }  // namespace strata::iss

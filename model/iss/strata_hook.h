@@ -47,6 +47,8 @@ class StrataHook {
 
 unsigned strata_mem_in_words(Op op);
 unsigned strata_mem_out_words(Op op);
-constexpr unsigned kMaxStrataMemWords = 12;
+constexpr unsigned kMaxStrataMemWords = 16;
+// The bytes one ray moves for a stream push or pop (48, or 64 for push64/pop64); 0 otherwise.
+unsigned stream_ray_bytes(Op op);
 
 }  // namespace strata::iss

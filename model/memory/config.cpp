@@ -94,6 +94,7 @@ void StreamMemoryConfig::validate() const {
   need_horizon("stream.calendar_horizon_cycles", calendar_horizon_cycles);
   need_latency("stream.access_latency_cycles", access_latency_cycles);
   need_latency("stream.query_latency_cycles", query_latency_cycles);
+  if (ray_bytes != 48 && ray_bytes != 64) bad("stream.ray_bytes", "must be 48 or 64", ray_bytes);
   if (access_energy_nj) need_energy("stream.access_energy_nj", *access_energy_nj);
   else need_table_energy("stream.size_bytes", size_bytes);
 }

@@ -90,6 +90,9 @@ struct StreamMemoryConfig {
   SchedulingPolicy policy = SchedulingPolicy::kFullestFirst;
   bool sticky = true;  // a TM keeps its treelet while that buffer has rays
   uint32_t calendar_horizon_cycles = 16384;  // as the L1 data cache's
+  // Bytes of one entry's ray: 48 (the paper's ray; its path's state elsewhere) or 64 (a ray
+  // that carries its path's state: design.path_state = compact). The chip sets it.
+  uint32_t ray_bytes = 48;
   // Bytes of path state kept beside each ray slot (0: none; the chip sets it when path state
   // lives on chip). They come out of size_bytes, so the ray capacity shrinks.
   uint32_t path_record_bytes = 0;

@@ -66,6 +66,10 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
           "Rays the memory holds (its size less the heads, links, thread bits and on-chip path records).");
   g.level("path_record_bytes", [this] { return uint64_t{layout().path_record_bytes}; }, Unit::kBytes,
           "Bytes of path state beside each ray slot (0: path state is not kept here).");
+  g.level("ray_bytes", [this] { return uint64_t{layout().ray_bytes}; }, Unit::kBytes,
+          "Bytes of one entry's ray: 48, or 64 when the ray carries its path's state (design.path_state = compact).");
+  g.level("sram_bytes_per_ray", [this] { return uint64_t{layout().entry_bytes()} + layout().path_record_bytes; },
+          Unit::kBytes, "SRAM each ray slot takes: the ray, its link word and any path record beside it.");
   g.count("link_conflicts", &c.link_conflicts, Unit::kCount,
           "Transfers that found their bank's link from the crossbar busy (links modelled here, as on the chip).");
   g.count("link_conflict_cycles", &c.link_conflict_cycles, Unit::kCycles, "Cycles transfers waited for those links.");
@@ -112,13 +116,13 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
   const AccessClass access = ext->access;
   const bool moves_ray = access == AccessClass::kStreamPush || access == AccessClass::kStreamPop;
   const bool path = access == AccessClass::kStreamPathRead || access == AccessClass::kStreamPathWrite;
-  if (moves_ray && (gp.get_data_length() != StreamLayout::kRayBytes || gp.get_data_ptr() == nullptr)) {
+  if (moves_ray && (gp.get_data_length() != layout().ray_bytes || gp.get_data_ptr() == nullptr)) {
     gp.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
     return;
   }
   // Path state rides in the SRAM beside the rays: one port access moves up to a ray's width.
   if (path && (layout().path_record_bytes == 0 || gp.get_data_length() == 0 ||
-               gp.get_data_length() > StreamLayout::kRayBytes)) {
+               gp.get_data_length() > layout().ray_bytes)) {
     gp.set_response_status(path && layout().path_record_bytes == 0 ? tlm::TLM_COMMAND_ERROR_RESPONSE
                                                                    : tlm::TLM_BURST_ERROR_RESPONSE);
     return;
@@ -154,7 +158,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       if (status == StreamStatus::kOk) {
         ++rays_pushed_;
         scheduler_.resized(ext->treelet, before, before + 1);
-        c.bytes_written += StreamLayout::kRayBytes;
+        c.bytes_written += layout().ray_bytes;
         result = 1;
       } else if (status == StreamStatus::kFull) {
         ++c.full_rejections;
@@ -175,7 +179,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
         if (status == StreamStatus::kOk) {
           ++rays_popped_;
           scheduler_.resized(treelet, before, before - 1);
-          c.bytes_read += StreamLayout::kRayBytes;
+          c.bytes_read += layout().ray_bytes;
           result = 1;
         }
       }
@@ -246,7 +250,7 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
 
   ClassTraffic& k = traffic(c.by_data, ext->data);
   ++k.accesses;
-  if (result == 1 && moves_ray) k.bytes += StreamLayout::kRayBytes;
+  if (result == 1 && moves_ray) k.bytes += layout().ray_bytes;
   if (path) k.bytes += gp.get_data_length();
 
   if (trace_.enabled()) {

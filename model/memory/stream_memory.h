@@ -2,13 +2,14 @@
 // and capacity (MemoryExtension::access) over the linked lists in StreamSram, and assigning
 // treelet buffers to TMs with a StreamScheduler.
 //
-//   push     TLM write of 48 B; ext.treelet; status kOk, or kFull (nothing stored: retry).
-//   pop      TLM read of 48 B; ext.treelet, or kNoTreelet for the TM's assigned buffer;
+//   push     TLM write of one ray (layout().ray_bytes: 48, or 64 with the compact path state);
+//            ext.treelet; status kOk, or kFull (nothing stored: retry).
+//   pop      TLM read of one ray; ext.treelet, or kNoTreelet for the TM's assigned buffer;
 //            status kOk, or kEmpty (buffer empty or none assigned).
 //   size     ext.treelet; result = rays in it.
 //   assign   ext.tm_id; result = the TM's treelet, or kNoTreelet when all are empty.
 //   capacity result = rays the memory holds.
-//   path read/write  up to 48 B of on-chip path state (timing only: the TP moved the data);
+//   path read/write  up to a ray's width of on-chip path state (timing only: the TP moved the data);
 //            refused unless the layout keeps path records (path_record_bytes).
 // ext.result is also 1/0 for push and pop, as the strata.streampush/pop instructions return.
 //

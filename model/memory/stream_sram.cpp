@@ -15,8 +15,9 @@ StreamLayout make_stream_layout(const StreamMemoryConfig& config) {
   l.counts_offset = l.heads_offset + 4ull * config.treelets;
   l.credits_offset = l.counts_offset + 4ull * config.treelets;
   l.entries_offset = l.credits_offset + ((uint64_t{config.threads} + 31) / 32) * 4;
+  l.ray_bytes = config.ray_bytes;
   l.path_record_bytes = config.path_record_bytes;
-  const uint64_t per_ray = StreamLayout::kEntryBytes + uint64_t{config.path_record_bytes};
+  const uint64_t per_ray = l.entry_bytes() + uint64_t{config.path_record_bytes};
   if (l.entries_offset + per_ray > l.size_bytes)
     throw std::invalid_argument("stream.size_bytes: " + std::to_string(config.size_bytes) +
                                 " bytes cannot hold the heads, counts and credit bits of " +
@@ -25,7 +26,7 @@ StreamLayout make_stream_layout(const StreamMemoryConfig& config) {
                                 (config.path_record_bytes ? " and its path record" : ""));
   const uint64_t entries = (l.size_bytes - l.entries_offset) / per_ray;
   l.capacity = static_cast<uint32_t>(entries < StreamSram::kNil ? entries : StreamSram::kNil - 1);
-  l.path_records_offset = l.entries_offset + uint64_t{l.capacity} * StreamLayout::kEntryBytes;
+  l.path_records_offset = l.entries_offset + uint64_t{l.capacity} * l.entry_bytes();
   return l;
 }
 
@@ -66,15 +67,15 @@ StreamSram::Status StreamSram::push(uint32_t thread, uint32_t treelet, const uin
   }
   uint32_t entry = read32(kFreeHeadOffset);
   if (entry != kNil) {
-    write32(kFreeHeadOffset, read32(entry_offset(entry) + StreamLayout::kRayBytes));
+    write32(kFreeHeadOffset, read32(entry_offset(entry) + layout_.ray_bytes));
   } else {
     entry = read32(kNextUnusedOffset);
     write32(kNextUnusedOffset, entry + 1);
   }
   const uint64_t at = entry_offset(entry);
-  std::memcpy(&sram_[at], ray, StreamLayout::kRayBytes);
+  std::memcpy(&sram_[at], ray, layout_.ray_bytes);
   const uint64_t head = layout_.heads_offset + 4ull * treelet;
-  write32(at + StreamLayout::kRayBytes, read32(head));
+  write32(at + layout_.ray_bytes, read32(head));
   write32(head, entry);
   write32(layout_.counts_offset + 4ull * treelet, size(treelet) + 1);
   write32(kStoredOffset, stored() + 1);
@@ -89,9 +90,9 @@ StreamSram::Status StreamSram::pop(uint32_t thread, uint32_t treelet, uint8_t* r
   const uint32_t entry = read32(head);
   if (entry == kNil) return Status::kEmpty;
   const uint64_t at = entry_offset(entry);
-  std::memcpy(ray, &sram_[at], StreamLayout::kRayBytes);
-  write32(head, read32(at + StreamLayout::kRayBytes));
-  write32(at + StreamLayout::kRayBytes, read32(kFreeHeadOffset));
+  std::memcpy(ray, &sram_[at], layout_.ray_bytes);
+  write32(head, read32(at + layout_.ray_bytes));
+  write32(at + layout_.ray_bytes, read32(kFreeHeadOffset));
   write32(kFreeHeadOffset, entry);
   write32(layout_.counts_offset + 4ull * treelet, size(treelet) - 1);
   write32(kStoredOffset, stored() - 1);

@@ -5,11 +5,11 @@
 //   [free-list head 4 B][next-unused 4 B][stored 4 B][credits 4 B]
 //   [head pointer 4 B x treelets][ray count 4 B x treelets]
 //   [holds-a-ray bit x threads, rounded up to 4 B]
-//   [entry 0: ray 48 B + link 4 B][entry 1] ... [entry capacity-1]
+//   [entry 0: ray 48 or 64 B + link 4 B][entry 1] ... [entry capacity-1]
 //   [path record 0] ... [path record capacity-1]   (only with path state on chip)
 //
 // Entries never used yet are taken from a bump pointer, recycled ones from the free list, so
-// reset costs nothing per entry. The lists ARE the data: push copies the 48 bytes in, pop
+// reset costs nothing per entry. The lists ARE the data: push copies the ray's bytes in, pop
 // copies them out.
 //
 // Never losing a ray, never deadlocking: a thread that pops a ray holds a credit for one slot
@@ -30,8 +30,8 @@
 namespace strata::memory {
 
 struct StreamLayout {
-  static constexpr uint32_t kRayBytes = 48;
-  static constexpr uint32_t kEntryBytes = kRayBytes + 4;  // ray + link word
+  uint32_t ray_bytes = 48;  // StreamMemoryConfig::ray_bytes
+  uint32_t entry_bytes() const { return ray_bytes + 4; }  // ray + link word
   uint64_t size_bytes = 0;
   uint32_t treelets = 0;
   uint32_t threads = 0;
@@ -43,7 +43,7 @@ struct StreamLayout {
   uint64_t path_records_offset = 0;
   // Bytes not holding ray payload (registers, heads, counts, credit bits, links, slack) / S.
   double overhead_fraction() const {
-    return 1.0 - static_cast<double>(uint64_t{capacity} * kRayBytes) / static_cast<double>(size_bytes);
+    return 1.0 - static_cast<double>(uint64_t{capacity} * ray_bytes) / static_cast<double>(size_bytes);
   }
 };
 
@@ -72,7 +72,7 @@ class StreamSram {
   static constexpr uint64_t kFreeHeadOffset = 0, kNextUnusedOffset = 4, kStoredOffset = 8, kCreditsOffset = 12;
   uint32_t read32(uint64_t offset) const;
   void write32(uint64_t offset, uint32_t value);
-  uint64_t entry_offset(uint32_t entry) const { return layout_.entries_offset + uint64_t{entry} * StreamLayout::kEntryBytes; }
+  uint64_t entry_offset(uint32_t entry) const { return layout_.entries_offset + uint64_t{entry} * layout_.entry_bytes(); }
   void set_credit(uint32_t thread, bool on);
 
   StreamLayout layout_;

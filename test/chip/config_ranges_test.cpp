@@ -74,9 +74,9 @@ std::vector<Row> read_table() {
   return rows;
 }
 
-// The built-in defaults with path state in DRAM: the defaults alone are no loadable chip (on
-// chip, the path records leave 512 KiB of stream memory 3483 rays for 4096 TPs), and each
-// design file sets its own sizes.
+// The built-in defaults with path state in DRAM: 52 bytes of stream memory per ray, the fewest
+// of the three placements (on chip, the path records would leave 512 KiB of stream memory 3483
+// rays for 4096 TPs), and each design file sets its own sizes.
 const char* const kBase = "design.path_state=dram";
 
 // "" when accepted, else the error.

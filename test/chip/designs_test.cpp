@@ -1,7 +1,8 @@
-// The three designs (TRaX baseline, STRaTA streams, STRaTA streams + pipelines) rendering a
+// The three designs (TRaX baseline, STRaTA streams, STRaTA streams + pipelines), the STRaTA
+// ones with each path-state placement (compact, on-chip records, DRAM records), rendering a
 // frame on a small chip, in both timing modes, on Cornell and on a small Sibenik view: the
-// image and the ray statistics equal the native twin's, every ray generated was completed,
-// and no ray is left in the stream memory.
+// image and the ray statistics equal the native twin's (with the design's path arithmetic),
+// every ray generated was completed, and no ray is left in the stream memory.
 #include <cstring>
 #include <tuple>
 
@@ -19,8 +20,10 @@ struct Design {
   PathStatePlacement path_state;
 };
 const Design kDesigns[] = {{"trax", false, false, "baseline", PathStatePlacement::kDram},
+                           {"streams_compact", true, false, "streams_compact", PathStatePlacement::kCompact},
                            {"streams", true, false, "streams", PathStatePlacement::kOnChip},
                            {"streams_pathdram", true, false, "streams", PathStatePlacement::kDram},
+                           {"pipelines_compact", true, true, "streams_pipelines_compact", PathStatePlacement::kCompact},
                            {"pipelines", true, true, "streams_pipelines", PathStatePlacement::kOnChip},
                            {"pipelines_pathdram", true, true, "streams_pipelines", PathStatePlacement::kDram}};
 
@@ -51,7 +54,10 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
 
-  const sim::RenderResult twin = sim::render_native(frame.image, frame.settings);
+  // The twin computes with the design's path arithmetic: packed where the rays carry the state.
+  sim::RenderSettings twin_settings = frame.settings;
+  if (d.path_state == PathStatePlacement::kCompact) twin_settings.path_arithmetic = sim::PathArithmetic::kPacked;
+  const sim::RenderResult twin = sim::render_native(frame.image, twin_settings);
   const std::vector<kernels::Pixel> image = chip.framebuffer();
   EXPECT_EQ(std::memcmp(image.data(), twin.image.data(), image.size() * sizeof(kernels::Pixel)), 0)
       << "image differs from the native twin";
@@ -81,6 +87,13 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
       EXPECT_EQ(on_chip, s["path_reads"].get<uint64_t>() + s["path_writes"].get<uint64_t>());
       EXPECT_EQ(off_chip, 0u) << "path state reached the L1, L2 or DRAM";
       EXPECT_EQ(s["path_record_bytes"], kernels::kPathRecordBytes);
+      EXPECT_EQ(s["ray_bytes"], 48);
+    } else if (d.path_state == PathStatePlacement::kCompact) {
+      EXPECT_EQ(on_chip, 0u);
+      EXPECT_EQ(off_chip, 0u) << "the compact path state lives in the rays alone";
+      EXPECT_EQ(s["path_record_bytes"], 0);
+      EXPECT_EQ(s["ray_bytes"], 64);
+      EXPECT_EQ(s["sram_bytes_per_ray"], 68);
     } else {
       EXPECT_EQ(on_chip, 0u);
       EXPECT_GT(off_chip, 0u);
@@ -106,7 +119,7 @@ std::string param_name(const ::testing::TestParamInfo<Param>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Chip, Designs,
-                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4),
+                         ::testing::Combine(::testing::Values(0, 1, 2, 3, 4, 5, 6),
                                             ::testing::Values(transport::TimingMode::kLooselyTimed,
                                                               transport::TimingMode::kPrecise),
                                             ::testing::Values("cornell", "sibenik")),

@@ -50,6 +50,8 @@ TEST(IssStrata, EveryOperationDecodesFromTheSharedConstants) {
       {strata(T, STRATA_F3_STREAM, STRATA_STREAM_PUSH, 1, 2, 3), Op::kStStreamPush},
       {strata(T, STRATA_F3_STREAM, STRATA_STREAM_POP, 1, 2, 0), Op::kStStreamPop},
       {strata(T, STRATA_F3_STREAM, STRATA_STREAM_ASSIGN, 1, 0, 0), Op::kStStreamAssign},
+      {strata(T, STRATA_F3_STREAM, STRATA_STREAM_PUSH64, 1, 2, 3), Op::kStStreamPush64},
+      {strata(T, STRATA_F3_STREAM, STRATA_STREAM_POP64, 1, 2, 0), Op::kStStreamPop64},
       {strata(T, STRATA_F3_CONTROL, STRATA_CONTROL_HALT, 0, 0, 0), Op::kStHalt},
       {strata(P, STRATA_F3_PIPE_CONFIG, STRATA_PIPE_GENERAL, 0, 0, 0), Op::kStPipeGeneral},
       {strata(P, STRATA_F3_PIPE_CONFIG, STRATA_PIPE_BOX, 0, 0, 0), Op::kStPipeBox},
@@ -255,6 +257,19 @@ TEST(IssStrataFunctional, StreamCapacityIsEnforced) {
   EXPECT_EQ(call(hook, Op::kStStreamPop, 0, 0, {}, out).status, HookStatus::kStore);
   EXPECT_EQ(out[11], 7u);
   EXPECT_EQ(call(hook, Op::kStStreamPush, 0, 2, ray).dest[0], 1u);  // room again
+}
+
+// A 64-byte ray (the compact path state) comes back whole; a pop of the other width traps.
+TEST(IssStrataFunctional, SixtyFourByteRaysComeBackWholeAndWidthsMustMatch) {
+  FunctionalStrataHook hook;
+  std::vector<uint32_t> ray(16);
+  for (uint32_t i = 0; i < 16; ++i) ray[i] = 100 + i;
+  EXPECT_EQ(call(hook, Op::kStStreamPush64, 0, 3, ray).dest[0], 1u);
+  EXPECT_EQ(call(hook, Op::kStStreamAssign).dest[0], 3u);
+  uint32_t out[16] = {};
+  EXPECT_EQ(call(hook, Op::kStStreamPop, 0, 0, {}, out).status, HookStatus::kIllegal);  // 48-byte pop
+  EXPECT_EQ(call(hook, Op::kStStreamPop64, 0, 0, {}, out).status, HookStatus::kStore);
+  for (uint32_t i = 0; i < 16; ++i) EXPECT_EQ(out[i], 100 + i);
 }
 
 TEST(IssStrataFunctional, PipelinesNeedTheirConfiguration) {

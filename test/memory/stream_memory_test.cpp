@@ -38,7 +38,7 @@ StreamMemoryConfig tiny(uint32_t rays, uint32_t treelets, uint32_t threads, uint
   c.threads = threads;
   c.tms = tms;
   const uint32_t header = 16 + 8 * treelets + (threads + 31) / 32 * 4;
-  c.size_bytes = header + rays * StreamLayout::kEntryBytes;
+  c.size_bytes = header + rays * StreamLayout{}.entry_bytes();
   c.access_energy_nj = 0.5;  // below the CACTI table's range: give it
   return c;
 }
@@ -48,6 +48,10 @@ TEST(StreamMemoryLayout, HeadsCountsCreditsAndLinksComeOutOfTheCapacity) {
   EXPECT_EQ(l.entries_offset, 16u + 4096u + 4096u + 512u);
   EXPECT_EQ(l.capacity, (512u * 1024u - 8720u) / 52u);
   EXPECT_EQ(l.capacity, 9914u);
+  // A 64-byte ray (the compact path state) takes a 68-byte entry.
+  StreamMemoryConfig compact;
+  compact.ray_bytes = 64;
+  EXPECT_EQ(make_stream_layout(compact).capacity, (512u * 1024u - 8720u) / 68u);
   EXPECT_LT(l.overhead_fraction(), 0.10);  // links alone are 4/52 = 7.7 %
   StreamMemoryConfig big;
   big.size_bytes = 16 * 1024 * 1024;

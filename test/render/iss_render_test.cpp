@@ -13,12 +13,15 @@
 namespace strata::sim {
 namespace {
 
-void expect_identical(const scenes::Scene& scene, uint32_t size, const std::string& kernel = "baseline") {
+void expect_identical(const scenes::Scene& scene, uint32_t size, const std::string& kernel = "baseline",
+                      PathArithmetic arithmetic = PathArithmetic::kExact, uint32_t spp = 1) {
   const std::string elf = default_kernel_elf(kernel);
   ASSERT_TRUE(std::filesystem::exists(elf)) << elf << " was not built";
   const scenes::SceneImage image = build_scene_image(scene, {}, nullptr);
   RenderSettings s;
   s.width = s.height = size;
+  s.samples_per_pixel = spp;
+  s.path_arithmetic = arithmetic;
   const RenderResult native = render_native(image, s);
   IssRunStats stats;
   // Bounded, so that a kernel that waits forever fails here rather than hanging the suite.
@@ -28,7 +31,7 @@ void expect_identical(const scenes::Scene& scene, uint32_t size, const std::stri
       << "firmware image differs from the native twin";
   EXPECT_EQ(std::memcmp(&native.counters, &iss.counters, sizeof native.counters), 0)
       << "firmware ray statistics differ from the native twin";
-  EXPECT_EQ(iss.counters.paths, uint64_t(size) * size);
+  EXPECT_EQ(iss.counters.paths, uint64_t(size) * size * spp);
   EXPECT_GT(stats.instructions, iss.total_rays() * 100);  // it really ran the kernel
   EXPECT_GT(stats.counters.fp_reads, 0u);
 }
@@ -42,6 +45,14 @@ TEST(IssRender, CornellFirmwareImageIsBitIdenticalToTheNativeTwin) {
 TEST(IssRender, StreamingKernelsOnOneHartMatchTheNativeTwin) {
   expect_identical(scenes::make_cornell({0.3, 1}), 64, "streams");
   expect_identical(scenes::make_cornell({0.3, 1}), 64, "streams_pipelines");
+}
+
+// The compact path state: each ray carries its path, packed; the twin computes with the same
+// packed arithmetic. Several samples per pixel go through the framebuffer between samples.
+TEST(IssRender, CompactStreamingKernelsOnOneHartMatchThePackedTwin) {
+  expect_identical(scenes::make_cornell({0.3, 1}), 64, "streams_compact", PathArithmetic::kPacked);
+  expect_identical(scenes::make_cornell({0.3, 1}), 64, "streams_pipelines_compact", PathArithmetic::kPacked);
+  expect_identical(scenes::make_cornell({0.3, 1}), 16, "streams_compact", PathArithmetic::kPacked, 3);
 }
 
 TEST(IssRender, SibenikFirmwareImageIsBitIdenticalToTheNativeTwin) {
