@@ -75,6 +75,15 @@ void EnergyConfig::validate() const {
                                   std::to_string(v));
 }
 
+const char* path_state_name(PathStatePlacement p) {
+  switch (p) {
+    case PathStatePlacement::kCompact: return "compact";
+    case PathStatePlacement::kOnChip: return "on-chip";
+    case PathStatePlacement::kDram: return "dram";
+  }
+  return "?";
+}
+
 void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);
   b.bind("design.streams", &design.streams);

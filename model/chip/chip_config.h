@@ -38,6 +38,9 @@ enum class PathStatePlacement : uint8_t {
 // the chip must supply (FrameInputs::pipeline_backend).
 enum class PipelineImpl : uint8_t { kModel, kRtl };
 
+// The config's name of a placement: "compact", "on-chip" or "dram".
+const char* path_state_name(PathStatePlacement p);
+
 struct DesignConfig {
   std::string name = "strata-pipelines";
   bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "model/chip/guest_layout.h"
 #include "model/chip/sampling_factors.h"
 
 namespace strata::chip {
@@ -155,6 +156,7 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
   nlohmann::json j = values_.to_json(detail);
   j["timing"] = {{"mode", to_string(cfg.timing.mode)}, {"quantum_cycles", cfg.timing.quantum_cycles}};
   j["design"] = {{"name", cfg.design.name}, {"streams", cfg.design.streams}, {"pipelines", cfg.design.pipelines}};
+  if (cfg.design.streams) j["design"]["path_state"] = path_state_name(cfg.design.path_state);
   j["simulation"]["timing_mode"] = to_string(cfg.timing.mode);
   j["simulation"]["quantum_cycles"] = cfg.timing.quantum_cycles;
   if (interrupted_) j["interrupted"] = true;
@@ -205,6 +207,19 @@ std::string FrameReport::summary() const {
     s += format("frame          %llu cycles%s = %.3f ms simulated -> %.2f frames/s [%s]\n", ull(v.count("frame.cycles")),
                 pm("frame.cycles").c_str(), v.number("frame.seconds") * 1e3, v.number("frame.frames_per_second"),
                 ci.c_str());
+  if (cfg.design.streams) {
+    // What bounds the paths in flight: the stream memory's rays, or the frame's pixels.
+    const uint32_t capacity = uint32_t(v.count("memory.stream.capacity"));
+    const uint32_t paths = paths_in_flight_for(capacity, cfg.threads(), chip_.pixel_count());
+    const bool pixel_bound = paths == chip_.pixel_count() && capacity > cfg.threads() &&
+                             capacity - cfg.threads() > chip_.pixel_count();
+    s += format("path state     %s: %.2f MB of stream memory hold %u rays (%llu B each), paths in flight at most "
+                "%u (%s)\n",
+                path_state_name(cfg.design.path_state), double(cfg.stream.size_bytes) / 1048576.0, capacity,
+                ull(v.count("memory.stream.sram_bytes_per_ray")), paths,
+                pixel_bound ? format("bound by the frame's %u pixels, not the stream memory", chip_.pixel_count()).c_str()
+                            : "bound by the stream memory, a ray's room kept back per thread");
+  }
   s += format("rays           %llu primary, %llu bounce, %llu shadow (%llu total)%s\n",
               ull(v.count("rays.primary.traced")), ull(v.count("rays.bounce.traced")),
               ull(v.count("rays.shadow.traced")), ull(v.count("rays.total")), exact);

@@ -16,6 +16,11 @@ uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels) {
   return std::min(stream_capacity_rays, std::max(pixels, 1u));
 }
 
+uint32_t paths_in_flight_for(uint32_t stream_capacity_rays, uint32_t threads, uint32_t pixels) {
+  const uint32_t fill = stream_capacity_rays > threads ? stream_capacity_rays - threads : 1u;
+  return std::min(fill, std::max(pixels, 1u));
+}
+
 GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f) {
   GuestLayout g;
   const uint64_t treelet = f.treelet_bytes > 64 ? f.treelet_bytes : 64;

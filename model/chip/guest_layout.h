@@ -34,6 +34,11 @@ uint64_t align_up(uint64_t v, uint64_t alignment);
 // Path records a streaming kernel gets: one per ray the stream memory holds, and no more than
 // the frame's pixels (at least one). The chip and the one-hart ISS render both plan with it.
 uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels);
+// The most paths a streaming kernel has in flight: its fill starts one per ray the stream
+// memory holds, less one ray's room per thread (a thread that popped a ray holds a slot for its
+// successor), and a pixel's samples run one after another, so at most one per pixel
+// (firmware/kernels/streams_kernel.h, run()).
+uint32_t paths_in_flight_for(uint32_t stream_capacity_rays, uint32_t threads, uint32_t pixels);
 
 // The data above `base`. Throws std::runtime_error when it leaves the 32-bit address space.
 GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f);

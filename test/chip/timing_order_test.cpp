@@ -85,8 +85,13 @@ TEST(TimingOrder, StreamOperationsInTimeOrderKeepLtL1MissesWithPrecise) {
   const double error_synced = misses(a) / misses(b) - 1.0, error_arrival = misses(o) / misses(b) - 1.0;
   std::printf("L1 misses against precise: %+.2f%% in time order, %+.2f%% in arrival order\n", 100 * error_synced,
               100 * error_arrival);
-  EXPECT_LT(std::abs(error_synced), 0.02);
+  // On a frame this small the LT error moves with the ray set: on this chip, Cornell 32x32 with
+  // seeds 1-4 gave -3.9%, -0.4%, -1.8% and -1.2% in time order against -10.5%, -6.3%, -7.2% and
+  // -6.7% in arrival order (issue 34, after the counter-based random numbers moved the rays).
+  // So: within the spread in time order, and arrival order clearly further below precise.
+  EXPECT_LT(std::abs(error_synced), 0.04);
   EXPECT_LT(error_arrival, -0.03);
+  EXPECT_LT(error_arrival, error_synced - 0.02);
   EXPECT_NEAR(a["frame"]["cycles"].get<double>() / b["frame"]["cycles"].get<double>(), 1.0, 0.03);
 }
 
