@@ -36,6 +36,22 @@ TEST(ChipConfig, TheThreeDesignsLoad) {
   EXPECT_EQ(pipes.stream.threads, 128u * 32u);  // derived
 }
 
+// The STRaTA designs ship with the compact path state (64-byte rays, 68 B of SRAM each with the
+// link), so a 512 KB stream memory holds a ray per TP of 128 TMs; 148 B with a path record on
+// chip does not, and the error says how many rays it holds.
+TEST(ChipConfig, HalfAMegabyteOfStreamMemoryRunsWithTheCompactPathState) {
+  const std::string streams = config_dir() + "strata-streams.json";
+  const ChipConfig c = load_chip_config(streams, {"memory.stream.size_bytes=524288"});
+  EXPECT_EQ(c.design.path_state, PathStatePlacement::kCompact);
+  EXPECT_EQ(c.stream.ray_bytes, 64u);
+  EXPECT_EQ(c.stream.path_record_bytes, 0u);
+  EXPECT_EQ(c.tms * c.tps_per_tm, 4096u);
+  const std::string refused = error_of(streams, {"memory.stream.size_bytes=524288", "design.path_state=on-chip"});
+  EXPECT_NE(refused.find("memory.stream.size_bytes"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("fewer than one per TP"), std::string::npos) << refused;
+  EXPECT_NE(error_of(streams, {"design.path_state=compressed"}).find("design.path_state"), std::string::npos);
+}
+
 TEST(ChipConfig, OverridesReachNestedFieldsAndRoundTripThroughJson) {
   const ChipConfig c = load_chip_config(config_dir() + "trax.json",
                                         {"tms=4", "memory.l1d.banks=4", "timing.mode=precise",
