@@ -61,6 +61,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.path_begin = layout_.path_table;
   env.path_end = layout_.path_table + uint64_t{layout_.path_slots} * kernels::kPathRecordBytes;
   env.report_cycle = &report_cycle_;
+  env.node_treelets = node_treelets_;
   pipeline_backend_ = inputs.pipeline_backend;
   env.pipeline_backend = &pipeline_backend_;
   for (uint32_t t = 0; t < config_.tms; ++t) {
@@ -120,6 +121,7 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   SceneImageHeader header;
   std::memcpy(&header, in.scene_image, sizeof header);
   data_classes_ = data_class_map(layout_, header);
+  node_treelets_ = header.node_treelet_count;
 }
 
 void Chip::trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window) {

@@ -89,6 +89,7 @@ class Chip : public sc_core::sc_module {
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);
   void register_stats();  // chip_statistics.cpp
   void register_rtl_pipeline_stats(stats::Group& group);
+  void register_treelet_stats(stats::Group& group);  // treelet_statistics.cpp
 
   ChipConfig config_;
   memory::SparseMemory backing_;
@@ -97,6 +98,7 @@ class Chip : public sc_core::sc_module {
   GuestLayout layout_;
   transport::DataClassMap data_classes_;
   uint32_t pixels_ = 0;
+  uint32_t node_treelets_ = 0;  // from the scene header: treelets [0, n) hold nodes
   std::unique_ptr<memory::Dram> dram_;
   std::unique_ptr<memory::L2Cache> l2_;
   std::unique_ptr<memory::StreamMemory> stream_;
@@ -111,6 +113,7 @@ class Chip : public sc_core::sc_module {
   transport::Cycle report_cycle_ = 0;
   kernels::RayCounters ray_totals_{};
   uint64_t ray_total_ = 0;
+  memory::StreamOccupancy::Summary occupancy_{};  // the stream memory's levels up to report_cycle_
   FusedBackendFactory pipeline_backend_;  // the TMs' environment points at it
   std::unique_ptr<SamplingSchedule> schedule_;  // sampled timing only
   std::unique_ptr<WindowSampler> sampler_;     // sampled timing only

@@ -6,6 +6,7 @@
 //   sampling sampled timing only: how much was timed, and the extrapolation factors
 //   instructions, xu      each TM's groups, summed (per TM with --stats-detail tm)
 //   memory   l1d, l1i (per TM, summed), l2 (banks), stream, interconnect, dram (channels)
+//   treelets the TMs' treelet sessions (per TM, summed), buffers and rays in flight
 //   energy_nj            the paper's split, from the counts above
 //   fidelity             the sentinels that say whether the timing can be trusted
 #include <algorithm>
@@ -167,6 +168,13 @@ void Chip::register_stats() {
   memory.child(&interconnect_->stats());
   memory.child(&dram_->stats());
   root.child(&memory);
+
+  stats::Group& treelets = own("treelets",
+                               "The treelet mechanism (streaming designs; 0 on TRaX): each TM's treelet sessions, "
+                               "with the rays they traced and the L1 data lines they filled, and where the rays were "
+                               "over the frame.");
+  register_treelet_stats(treelets);
+  root.child(&treelets);
 
   // Energy per frame, split as the STRaTA paper does: from the counts above, after sampled
   // timing's extrapolation.

@@ -30,7 +30,8 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       sampler_(env.config->timing, env.schedule, env.config->global_register_latency_cycles),
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
-                stats::Basis::kTimedInstructions) {
+                stats::Basis::kTimedInstructions),
+      sessions_(env.node_treelets) {
   access_gp_.set_extension(access_ext_);
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
@@ -290,6 +291,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     if (counting()) ++counters_.l1_requests;
     ready = std::max(ready, transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, a,
                                      scratch, bytes, at, true, transport::kNoTreelet, tp, nullptr));
+    if (config_.design.streams && counting()) sessions_.answered(access_ext_->served_by);  // as the L1 counts fills
     a += bytes;
   }
   return ready;
@@ -448,12 +450,14 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       if (result.dest[0]) {
         std::memcpy(call.out, scratch, ray_bytes);
         result.status = iss::HookStatus::kStore;
+        sessions_.popped();
       }
       break;
     default:  // kStStreamAssign
       hook_ready_ = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, request_cycle_, false,
                              transport::kNoTreelet, tp, &ext);
       result.dest[0] = ext.result;
+      sessions_.assigned(ext.result);
       if (trace_.enabled())
         trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), global_cycle_);
       break;

@@ -36,6 +36,7 @@
 #include "model/chip/tm_sampler.h"
 #include "model/chip/tp_memory.h"
 #include "model/chip/tp_schedule.h"
+#include "model/chip/treelet_sessions.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
 #include "model/memory/sparse_memory.h"
@@ -70,6 +71,8 @@ struct TmEnvironment {
   const transport::Cycle* report_cycle = nullptr;
   // tm.pipeline_impl=rtl: makes the backend of each TM that uses it (null otherwise).
   const FusedBackendFactory* pipeline_backend = nullptr;
+  // Treelets [0, node_treelets) hold BVH nodes, the rest triangles (the scene header's count).
+  uint32_t node_treelets = 0;
 };
 
 struct TmCounters {
@@ -111,6 +114,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   // This TM's statistics groups: its TPs' instructions and stalls, and its XU crossbar.
   const stats::Group& instruction_stats() const { return instruction_stats_; }
   const stats::Group& xu_stats() const { return xu_stats_; }
+  // Its treelet sessions: rays traced and L1 lines filled per treelet buffer it took.
+  const stats::Group& session_stats() const { return sessions_.stats(); }
   tm::TpStats tp_stats() const;  // summed over the TM's TPs
   iss::Counters iss_counters() const;
   bool failed() const { return !error_.empty(); }
@@ -200,6 +205,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   tm::XuStats xu_totals_;
   stats::Group instruction_stats_;
   stats::Group xu_stats_;
+  TreeletSessions sessions_;
   std::vector<std::unique_ptr<stats::Group>> stat_groups_;  // the sub-groups of both
 
   memory::WindowTrace trace_;

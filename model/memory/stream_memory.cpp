@@ -215,6 +215,8 @@ void StreamMemory::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& d
       break;
   }
 
+  if (moves_ray) occupancy_.record(t, sram_.stored() + sram_.credits(), sram_.stored(), scheduler_.nonempty());
+
   // Then the time: the data crosses the bank's link (a store's on the way in, a load's on
   // the way out), and a ray or path-state access takes one of the bank's ports.
   Bank& k_bank = banks_[bank];

@@ -21,6 +21,7 @@
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
 #include "model/stats/stat_group.h"
+#include "model/memory/stream_occupancy.h"
 #include "model/memory/stream_scheduler.h"
 #include "model/memory/stream_sram.h"
 #include "model/memory/window_trace.h"
@@ -54,6 +55,9 @@ class StreamMemory : public sc_core::sc_module {
 
   uint32_t capacity() const { return sram_.capacity(); }
   uint32_t stored() const { return sram_.stored(); }
+  uint32_t credits() const { return sram_.credits(); }  // rays held by threads that popped one
+  // Rays in flight (stored + held), the buffers holding rays, over the frame.
+  const StreamOccupancy& occupancy() const { return occupancy_; }
   uint32_t size(uint32_t treelet) const { return sram_.size(treelet); }
   const StreamLayout& layout() const { return sram_.layout(); }
   const StreamScheduler& scheduler() const { return scheduler_; }
@@ -85,6 +89,7 @@ class StreamMemory : public sc_core::sc_module {
   // Rays stored and taken over the whole frame, fast-forward included: the rays fix them, so
   // they are exact in every timing mode. Only refused pushes and empty pops depend on timing.
   uint64_t rays_pushed_ = 0, rays_popped_ = 0;
+  StreamOccupancy occupancy_;  // every push and pop, fast-forward included: levels are never scaled
   stats::Group stats_;
   std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;

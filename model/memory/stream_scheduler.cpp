@@ -57,6 +57,8 @@ void StreamScheduler::ring_remove(uint32_t t) {
 
 void StreamScheduler::resized(uint32_t treelet, uint32_t old_size, uint32_t new_size) {
   size_[treelet] = new_size;
+  if (old_size == 0 && new_size > 0) ++nonempty_;
+  if (old_size > 0 && new_size == 0) --nonempty_;
   if (policy_ == SchedulingPolicy::kFullestFirst) {
     if (old_size > 0) bucket_remove(treelet, old_size);
     if (new_size > 0) bucket_insert(treelet, new_size);

@@ -30,6 +30,7 @@ class StreamScheduler {
   uint32_t assigned(uint32_t tm) const { return assigned_[tm]; }
   uint32_t tms() const { return static_cast<uint32_t>(assigned_.size()); }
   uint32_t fullest() const { return largest_ == 0 ? kNone : bucket_head_[largest_]; }
+  uint32_t nonempty() const { return nonempty_; }  // buffers holding at least one ray
 
  private:
   void bucket_insert(uint32_t t, uint32_t size);
@@ -41,6 +42,7 @@ class StreamScheduler {
   bool sticky_;
   std::vector<uint32_t> size_;
   std::vector<uint32_t> assigned_;
+  uint32_t nonempty_ = 0;
   // kFullestFirst
   std::vector<uint32_t> bucket_head_;  // per size
   std::vector<uint32_t> next_, prev_;  // per treelet, within its bucket
