@@ -255,7 +255,7 @@ std::string FrameReport::summary() const {
     s += format("%-14s %s %.3f MB: %s [%s]\n", first ? "bytes by data" : "", label, total * 1e-6, line.c_str(), m);
     first = false;
   }
-  if (cfg.design.streams) s += treelet_lines(ci, exact);
+  if (cfg.design.streams) s += treelet_lines(ci);
   const stats::Values& e = v.group("energy_nj");
   s += format("energy         %.3f mJ/frame%s: L1 %.3f, L2+stream %.3f, DRAM %.3f, fetch %.3f, RF %.3f, XU %.3f mJ [%s]\n",
               e.number("total") * 1e-6, pm("energy_nj.total").c_str(), e.number("l1_data") * 1e-6,
@@ -344,15 +344,15 @@ std::string FrameReport::summary() const {
   return s;
 }
 
-std::string FrameReport::treelet_lines(const std::string& ci, const char* exact) const {
+std::string FrameReport::treelet_lines(const std::string& ci) const {
   // DRAM traffic as sessions x lines per session; the rays each visit serves, and the rays in
   // flight that feed the buffers, against the capacity.
   const stats::Values& t = values_.group("treelets.sessions");
   const double sessions = t.number("sessions");
-  std::string s = format("treelets       %llu sessions (node %llu, triangle %llu; %llu traced no ray), %.1f rays/session%s; "
+  std::string s = format("treelets       %llu sessions (node %llu, triangle %llu; %llu traced no ray), %.1f rays/session; "
                          "%.1f L1 data lines filled/session%s: L2 hit %.1f, DRAM %.1f, merged at the L2 %.1f [%s]\n",
                          ull(t.count("sessions")), ull(t.count("node.sessions")), ull(t.count("triangle.sessions")),
-                         ull(t.count("rays_histogram.zero")), t.number("rays_per_session"), exact, t.number("lines_per_session"),
+                         ull(t.count("rays_histogram.zero")), t.number("rays_per_session"), t.number("lines_per_session"),
                          pm("treelets.sessions.lines_per_session").c_str(), t.number("l2_hit_lines_per_session"),
                          t.number("dram_lines_per_session"), sessions > 0 ? t.number("lines_l2_merged") / sessions : 0.0,
                          ci.c_str());
@@ -371,6 +371,10 @@ std::string FrameReport::treelet_lines(const std::string& ci, const char* exact)
               f.number("mean"), share(f.number("mean")), ull(f.count("capacity")), f.number("steady_state"),
               share(f.number("steady_state")), ull(f.count("steady_end_cycle")), b.number("nonempty_mean"),
               b.number("rays_per_nonempty_mean"), to_string(chip_.config().timing.mode));
+  if (chip_.config().timing.mode == transport::TimingMode::kSampled)
+    s += "note           the sessions are every session of the sampled execution, whose fast-forward changes the ray "
+         "schedule (fewer, longer sessions than LT): read sessions and rays per session from LT "
+         "(docs/sampled-timing.md, \"Treelet sessions\")\n";
   return s;
 }
 

@@ -61,9 +61,8 @@ class FrameReport {
   // " ± 1.2%" for the statistic at `path` (relative), or "" when it has no interval.
   std::string pm(const std::string& path) const;
   std::string pm_points(const std::string& path) const;  // a ratio's: " ± 0.12 points"
-  // Streaming designs: the treelet mechanism's lines of the summary (`ci`: the estimates' tag,
-  // `exact`: what exact figures carry in sampled timing).
-  std::string treelet_lines(const std::string& ci, const char* exact) const;
+  // Streaming designs: the treelet mechanism's lines of the summary (`ci`: the estimates' tag).
+  std::string treelet_lines(const std::string& ci) const;
 };
 
 // The same JSON, for callers that only need that (tests, tools).

@@ -25,8 +25,12 @@
 // node_treelet_count; firmware/kernels/stream_ray.h, TreeletBounds).
 //
 // Sampled timing: every stream operation passes here, fast-forwarded or not, so sessions and
-// rays are exact in every mode; lines are counted in the measured parts only, as the L1's
-// fills are, and are extrapolated by data operations.
+// rays count the whole sampled execution; lines are counted in the measured parts only, as
+// the L1's fills are, and are extrapolated by data operations. The rays are the frame's in
+// every mode, but the sessions are the sampled execution's: its fast-forward runs each TP in
+// batches, in arrival order, and changes the ray schedule (fewer, longer sessions than LT).
+// Counting only the sessions of the measured parts, extrapolated by the rays popped, was
+// further off still (docs/sampled-timing.md, "Treelet sessions"): read sessions from LT.
 #pragma once
 
 #include "model/stats/stat_group.h"
