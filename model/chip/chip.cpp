@@ -41,6 +41,11 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   interconnect_->l2_side.bind(l2_->target);
   interconnect_->stream_side.bind(stream_->target);
   l2_->downstream.bind(dram_->target);
+  const transport::Clock clock = config_.clock();
+  dram_->set_clock(clock);
+  l2_->set_clock(clock);
+  stream_->set_clock(clock);
+  interconnect_->set_clock(clock);
 
   if (config_.timing.mode == transport::TimingMode::kSampled)
     schedule_ = std::make_unique<SamplingSchedule>(config_.timing);
@@ -68,6 +73,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     const std::string n = std::to_string(t);
     l1d_.push_back(std::make_unique<memory::L1DataCache>(("l1d_" + n).c_str(), config_.l1d, backing_));
     l1i_.push_back(std::make_unique<memory::L1InstructionCache>(("l1i_" + n).c_str(), config_.l1i, backing_));
+    l1d_.back()->set_clock(clock);
+    l1i_.back()->set_clock(clock);
     tms_.push_back(std::make_unique<ThreadMultiprocessor>(("tm_" + n).c_str(), env, t));
     tms_.back()->data_port.bind(l1d_.back()->target);
     tms_.back()->fetch_port.bind(l1i_.back()->target);
@@ -148,8 +155,7 @@ transport::Cycle Chip::cycles() const {
   transport::Cycle c = 0;
   for (const auto& tm : tms_) c = std::max(c, tm->counters().finished_cycle);
   if (!finished()) {  // stopped early (Ctrl-C): as far as global time got
-    const transport::Clock clock(sc_core::sc_time(1.0 / config_.clock_ghz, sc_core::SC_NS));
-    c = std::max(c, clock.now());
+    c = std::max(c, config_.clock().now());
   }
   return c;
 }

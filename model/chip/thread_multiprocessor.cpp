@@ -20,7 +20,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       env_(env),
       config_(*env.config),
       tm_id_(tm_id),
-      clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
+      clock_(env.config->clock()),
       access_ext_(new transport::MemoryExtension),  // owned by access_gp_ from here (set_extension)
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),

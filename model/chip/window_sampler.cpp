@@ -48,14 +48,13 @@ uint64_t WindowSampler::max_period(double frame_cycles) const {
 }
 
 void WindowSampler::run() {
-  const sc_core::sc_time cycle(1.0 / config_.clock_ghz, sc_core::SC_NS);
+  const transport::Clock clock = config_.clock();
   for (uint64_t window = 0;; window = schedule_.next_window(window)) {
     // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
     // there, far less than the distance to either measured part.
     const uint64_t period = schedule_.period_at(window);
     const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
-    const uint64_t now = static_cast<uint64_t>(sc_core::sc_time_stamp() / cycle + 0.5);
-    if (at > now) sc_core::wait(cycle * double(at - now));
+    if (at > clock.now()) sc_core::wait(clock.delay_until(at));
     if (progress_.done()) {  // the frame ended in this period: the report takes its tail
       batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
       return;
