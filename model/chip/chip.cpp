@@ -49,8 +49,12 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
 
   if (config_.timing.mode == transport::TimingMode::kSampled)
     schedule_ = std::make_unique<SamplingSchedule>(config_.timing);
+  // The window sampler takes its turn after the TMs' at the same cycle (id config_.tms).
+  const bool sampled = config_.timing.mode == transport::TimingMode::kSampled;
+  turns_ = std::make_unique<TurnOrder>(config_.tms + (sampled ? 1u : 0u), config_.tms, clock);
   TmEnvironment env;
   env.config = &config_;
+  env.turns = turns_.get();
   env.schedule = schedule_.get();
   env.backing = &backing_;
   env.code = &code_;
@@ -84,7 +88,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   }
   register_stats();
   if (config_.timing.mode == transport::TimingMode::kSampled)
-    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, WindowSampler::Progress{
+    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, *turns_, WindowSampler::Progress{
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
         [this] { return uint64_t{cycles()}; }});
 }

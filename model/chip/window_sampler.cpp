@@ -7,11 +7,12 @@
 namespace strata::chip {
 
 WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
-                             const stats::Group& root, Progress progress)
+                             const stats::Group& root, TurnOrder& turns, Progress progress)
     : sc_core::sc_module(name),
       config_(config),
       schedule_(schedule),
       root_(root),
+      turns_(turns),
       progress_(std::move(progress)),
       batches_(&WindowSampler::measured) {
   SC_THREAD(run);
@@ -48,15 +49,18 @@ uint64_t WindowSampler::max_period(double frame_cycles) const {
 }
 
 void WindowSampler::run() {
-  const transport::Clock clock = config_.clock();
+  const uint32_t id = config_.tms;  // after the TMs' turns at the same cycle
   for (uint64_t window = 0;; window = schedule_.next_window(window)) {
     // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
     // there, far less than the distance to either measured part.
     const uint64_t period = schedule_.period_at(window);
     const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
-    if (at > clock.now()) sc_core::wait(clock.delay_until(at));
+    // The TMs resuming at `at` run first: the snapshot does not depend on how the kernel
+    // orders processes woken at the same time (turn_order.h).
+    turns_.wait_turn(id, at);
     if (progress_.done()) {  // the frame ended in this period: the report takes its tail
       batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      turns_.leave();
       return;
     }
     stats::Values cumulative = stats::Values::snapshot(root_);
