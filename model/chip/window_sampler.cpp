@@ -59,7 +59,15 @@ void WindowSampler::run() {
     // orders processes woken at the same time (turn_order.h).
     turns_.wait_turn(id, at);
     if (progress_.done()) {  // the frame ended in this period: the report takes its tail
-      batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      // A frame that ended before the first window's snapshot has its tail as its only sample.
+      // Its weight then scales every measured count and the denominators alike, which the
+      // extrapolation (sampling_factors.cpp) divides out again, so it is 1. Weighted counts are
+      // rounded to whole numbers, and the tail's share of a period far longer than the frame
+      // (timing.sample_period_cycles=4294967295: 1e-5) rounded the frame's counts to a few or
+      // none (0% L1 hit rate, 0 L2 accesses; issue 39, F1).
+      batches_.set_tail_weight(batches_.windows() == 0
+                                   ? 1.0
+                                   : tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
       turns_.leave();
       return;
     }
