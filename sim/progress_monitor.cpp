@@ -51,14 +51,14 @@ void ProgressMonitor::print_line(bool final) {
 }
 
 void ProgressMonitor::run() {
-  const sc_core::sc_time cycle = sc_core::sc_time(1.0 / chip_.config().clock_ghz, sc_core::SC_NS);
+  const transport::Clock clock = chip_.config().clock();
   const uint64_t check = std::min(interval_, kStopCheckCycles);
   uint64_t cycles = 0, next_print = interval_;
   for (;;) {
     // Never past the cycle limit, so a limited run stops at it exactly.
     uint64_t step = check;
     if (cycle_limit_ > 0) step = std::min(step, cycle_limit_ - cycles);
-    sc_core::wait(cycle * double(step));
+    sc_core::wait(clock.duration(step));
     cycles += step;
     if (chip_.finished()) {
       print_line(true);

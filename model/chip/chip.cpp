@@ -41,11 +41,20 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   interconnect_->l2_side.bind(l2_->target);
   interconnect_->stream_side.bind(stream_->target);
   l2_->downstream.bind(dram_->target);
+  const transport::Clock clock = config_.clock();
+  dram_->set_clock(clock);
+  l2_->set_clock(clock);
+  stream_->set_clock(clock);
+  interconnect_->set_clock(clock);
 
   if (config_.timing.mode == transport::TimingMode::kSampled)
     schedule_ = std::make_unique<SamplingSchedule>(config_.timing);
+  // The window sampler takes its turn after the TMs' at the same cycle (id config_.tms).
+  const bool sampled = config_.timing.mode == transport::TimingMode::kSampled;
+  turns_ = std::make_unique<TurnOrder>(config_.tms + (sampled ? 1u : 0u), config_.tms, clock);
   TmEnvironment env;
   env.config = &config_;
+  env.turns = turns_.get();
   env.schedule = schedule_.get();
   env.backing = &backing_;
   env.code = &code_;
@@ -68,6 +77,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     const std::string n = std::to_string(t);
     l1d_.push_back(std::make_unique<memory::L1DataCache>(("l1d_" + n).c_str(), config_.l1d, backing_));
     l1i_.push_back(std::make_unique<memory::L1InstructionCache>(("l1i_" + n).c_str(), config_.l1i, backing_));
+    l1d_.back()->set_clock(clock);
+    l1i_.back()->set_clock(clock);
     tms_.push_back(std::make_unique<ThreadMultiprocessor>(("tm_" + n).c_str(), env, t));
     tms_.back()->data_port.bind(l1d_.back()->target);
     tms_.back()->fetch_port.bind(l1i_.back()->target);
@@ -77,7 +88,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   }
   register_stats();
   if (config_.timing.mode == transport::TimingMode::kSampled)
-    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, WindowSampler::Progress{
+    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, *turns_, WindowSampler::Progress{
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
         [this] { return uint64_t{cycles()}; }});
 }
@@ -148,8 +159,7 @@ transport::Cycle Chip::cycles() const {
   transport::Cycle c = 0;
   for (const auto& tm : tms_) c = std::max(c, tm->counters().finished_cycle);
   if (!finished()) {  // stopped early (Ctrl-C): as far as global time got
-    const transport::Clock clock(sc_core::sc_time(1.0 / config_.clock_ghz, sc_core::SC_NS));
-    c = std::max(c, clock.now());
+    c = std::max(c, config_.clock().now());
   }
   return c;
 }

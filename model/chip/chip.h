@@ -106,6 +106,7 @@ class Chip : public sc_core::sc_module {
   std::vector<std::unique_ptr<memory::L1DataCache>> l1d_;
   std::vector<std::unique_ptr<memory::L1InstructionCache>> l1i_;
   std::vector<std::unique_ptr<ThreadMultiprocessor>> tms_;
+  std::unique_ptr<TurnOrder> turns_;  // the TMs', and the window sampler's, turns at global time
 
   // Statistics: the tree, the groups the chip owns, and what they read at a snapshot.
   stats::Group stats_;

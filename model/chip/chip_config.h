@@ -12,6 +12,7 @@
 #include "model/chip/config_binder.h"
 #include "model/memory/config.h"
 #include "model/tm/tm_config.h"
+#include "tlm/clock.h"
 #include "tlm/timing_mode.h"
 
 namespace strata::chip {
@@ -106,6 +107,10 @@ struct EnergyConfig {
 struct ChipConfig {
   DesignConfig design;
   double clock_ghz = 1.0;
+  // The chip's cycle as SystemC time: the one conversion the TMs, every memory module, the
+  // window sampler and the progress monitor share, so a cycle is the same cycle everywhere and
+  // the frame's cycle counts do not depend on clock_ghz (only its seconds do).
+  transport::Clock clock() const { return transport::Clock(sc_core::sc_time(1.0 / clock_ghz, sc_core::SC_NS)); }
   uint32_t tms = 128;
   uint32_t tps_per_tm = 32;
   uint32_t tp_stack_bytes = 2048;   // per-TP local memory for the stack (not cached)

@@ -20,7 +20,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       env_(env),
       config_(*env.config),
       tm_id_(tm_id),
-      clock_(sc_core::sc_time(1.0 / env.config->clock_ghz, sc_core::SC_NS)),
+      clock_(env.config->clock()),
       access_ext_(new transport::MemoryExtension),  // owned by access_gp_ from here (set_extension)
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
@@ -114,7 +114,7 @@ void ThreadMultiprocessor::sync_to(Cycle t, Cycle others, bool exact) {
     // requests to it (a booking before global time starts at global time).
     const Cycle target = std::min(t, others);
     if (target <= global_cycle_) return;
-    sc_core::wait(clock_.delay_until(target));
+    env_.turns->wait_turn(tm_id_, target);
     stamp_ = sc_core::sc_time_stamp().value();
     global_cycle_ = clock_.now_at(stamp_);
     // The crossbar may forget what lies before every TP of this TM: the TP being stepped
@@ -148,6 +148,7 @@ void ThreadMultiprocessor::run() {
   schedule_ = TpSchedule(static_cast<uint32_t>(tps_.size()));
   TpSchedule& schedule = schedule_;
   live_tps_ = static_cast<uint32_t>(tps_.size());
+  env_.turns->wait_turn(tm_id_, clock_.now());  // registers; no TM runs before all have
   stamp_ = sc_core::sc_time_stamp().value();
   global_cycle_ = clock_.now_at(stamp_);
   while (schedule.top() != TpSchedule::kDone && error_.empty()) {
@@ -218,6 +219,7 @@ void ThreadMultiprocessor::run() {
     }
   }
   finished_ = error_.empty();
+  env_.turns->leave();
 }
 
 Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,

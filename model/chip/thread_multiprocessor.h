@@ -7,6 +7,9 @@
 // by at most the quantum (loosely timed) or waits for global time at every cycle it issues in
 // (precise). A TP that has halted leaves the schedule and costs nothing; one that is stalled
 // is simply scheduled at the cycle it can issue again, so no cycle is ever ticked idly.
+// The TMs wait for global time in turns (turn_order.h): TMs resuming at the same cycle run in
+// a round-robin order of their ids, so the shared memories see their requests in an order
+// that depends on the model alone.
 //
 // Sampled timing runs the same model in short detailed windows and, between them, runs each
 // TP's instructions in batches, functionally, advancing its time by the cycles per
@@ -36,6 +39,7 @@
 #include "model/chip/tm_sampler.h"
 #include "model/chip/tp_memory.h"
 #include "model/chip/tp_schedule.h"
+#include "model/chip/turn_order.h"
 #include "model/chip/treelet_sessions.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
@@ -73,6 +77,8 @@ struct TmEnvironment {
   const FusedBackendFactory* pipeline_backend = nullptr;
   // Treelets [0, node_treelets) hold BVH nodes, the rest triangles (the scene header's count).
   uint32_t node_treelets = 0;
+  // The order the TMs run in against global time (turn_order.h); TM i takes turns as id i.
+  TurnOrder* turns = nullptr;
 };
 
 struct TmCounters {

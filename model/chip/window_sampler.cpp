@@ -7,11 +7,12 @@
 namespace strata::chip {
 
 WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
-                             const stats::Group& root, Progress progress)
+                             const stats::Group& root, TurnOrder& turns, Progress progress)
     : sc_core::sc_module(name),
       config_(config),
       schedule_(schedule),
       root_(root),
+      turns_(turns),
       progress_(std::move(progress)),
       batches_(&WindowSampler::measured) {
   SC_THREAD(run);
@@ -48,16 +49,26 @@ uint64_t WindowSampler::max_period(double frame_cycles) const {
 }
 
 void WindowSampler::run() {
-  const sc_core::sc_time cycle(1.0 / config_.clock_ghz, sc_core::SC_NS);
+  const uint32_t id = config_.tms;  // after the TMs' turns at the same cycle
   for (uint64_t window = 0;; window = schedule_.next_window(window)) {
     // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
     // there, far less than the distance to either measured part.
     const uint64_t period = schedule_.period_at(window);
     const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
-    const uint64_t now = static_cast<uint64_t>(sc_core::sc_time_stamp() / cycle + 0.5);
-    if (at > now) sc_core::wait(cycle * double(at - now));
+    // The TMs resuming at `at` run first: the snapshot does not depend on how the kernel
+    // orders processes woken at the same time (turn_order.h).
+    turns_.wait_turn(id, at);
     if (progress_.done()) {  // the frame ended in this period: the report takes its tail
-      batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      // A frame that ended before the first window's snapshot has its tail as its only sample.
+      // Its weight then scales every measured count and the denominators alike, which the
+      // extrapolation (sampling_factors.cpp) divides out again, so it is 1. Weighted counts are
+      // rounded to whole numbers, and the tail's share of a period far longer than the frame
+      // (timing.sample_period_cycles=4294967295: 1e-5) rounded the frame's counts to a few or
+      // none (0% L1 hit rate, 0 L2 accesses; issue 39, F1).
+      batches_.set_tail_weight(batches_.windows() == 0
+                                   ? 1.0
+                                   : tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      turns_.leave();
       return;
     }
     stats::Values cumulative = stats::Values::snapshot(root_);

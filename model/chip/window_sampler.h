@@ -17,6 +17,7 @@
 
 #include "model/chip/chip_config.h"
 #include "model/chip/sampling_schedule.h"
+#include "model/chip/turn_order.h"
 #include "model/stats/batch_means.h"
 #include "model/stats/stat_group.h"
 
@@ -34,7 +35,7 @@ class WindowSampler : public sc_core::sc_module {
   };
   SC_HAS_PROCESS(WindowSampler);
   WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
-                const stats::Group& root, Progress progress);
+                const stats::Group& root, TurnOrder& turns, Progress progress);
   const stats::BatchMeans& batches() const { return batches_; }
 
   // The counts a window contributes to: every extrapolated count, and the sampling group's
@@ -85,6 +86,7 @@ class WindowSampler : public sc_core::sc_module {
   const ChipConfig& config_;
   SamplingSchedule& schedule_;
   const stats::Group& root_;
+  TurnOrder& turns_;  // it wakes in turn with the TMs, after those at the same cycle
   Progress progress_;
   stats::BatchMeans batches_;
   std::vector<Window> windows_;  // for the error target

@@ -81,6 +81,11 @@ class CachePath {
   void register_stats(stats::Group& g, const char* below, bool stores, bool writebacks, const char* requests_name,
                       const char* bytes_name);
 
+  void set_clock(const transport::Clock& clock) {
+    clock_ = clock;
+    below_.set_clock(clock);
+  }
+
   CacheCore& core() { return core_; }
   const CacheCore& core() const { return core_; }
   DownstreamPort& below() { return below_; }

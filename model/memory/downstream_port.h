@@ -34,6 +34,8 @@ class DownstreamPort {
   // Functional warming: the same request as a tag update only (no time, no counts).
   void warm(tlm::tlm_command cmd, uint64_t addr, const transport::MemoryExtension* origin, transport::DataClass data);
 
+  void set_clock(const transport::Clock& clock) { clock_ = clock; }
+
   uint64_t requests() const { return requests_; }
   uint64_t bytes() const { return bytes_; }
 

@@ -49,6 +49,9 @@ class Dram : public sc_core::sc_module {
   uint32_t channel_of(uint64_t addr) const {
     return channels_of_.bank(addr >> interleave_shift_);
   }
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { clock_ = clock; }
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
   const stats::Group& stats() const { return stats_; }

@@ -45,6 +45,9 @@ class Interconnect : public sc_core::sc_module {
   Interconnect(sc_core::sc_module_name name, const InterconnectConfig& config);
 
   uint32_t bank_of(uint64_t addr) const { return interleave_.bank(addr >> line_shift_); }
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { clock_ = clock; }
   const Counters& counters() const { return counters_.counted; }
   const stats::Group& stats() const { return stats_; }
   uint64_t overflow_bookings() const;

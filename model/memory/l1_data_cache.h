@@ -31,6 +31,9 @@ class L1DataCache : public sc_core::sc_module {
 
   L1DataCache(sc_core::sc_module_name name, const L1DataCacheConfig& config, SparseMemory& backing);
 
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { path_.set_clock(clock); }
   const Counters& counters() const { return path_.counters(); }
   const stats::Group& stats() const { return stats_; }
   const CacheCore& core() const { return path_.core(); }

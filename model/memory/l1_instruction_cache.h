@@ -27,6 +27,9 @@ class L1InstructionCache : public sc_core::sc_module {
 
   L1InstructionCache(sc_core::sc_module_name name, const L1InstructionCacheConfig& config, SparseMemory& backing);
 
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { path_.set_clock(clock); }
   const Counters& counters() const { return path_.counters(); }
   const stats::Group& stats() const { return stats_; }
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible

@@ -36,6 +36,9 @@ class L2Cache : public sc_core::sc_module {
 
   L2Cache(sc_core::sc_module_name name, const L2Config& config, SparseMemory& backing);
 
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { path_.set_clock(clock); }
   const Counters& counters() const { return path_.counters(); }
   const BankCounters& bank(uint32_t b) const { return banks_[b]; }
   const stats::Group& stats() const { return stats_; }

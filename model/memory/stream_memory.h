@@ -62,6 +62,9 @@ class StreamMemory : public sc_core::sc_module {
   const StreamLayout& layout() const { return sram_.layout(); }
   const StreamScheduler& scheduler() const { return scheduler_; }
   uint64_t overflow_bookings() const;
+  // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
+  // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
+  void set_clock(const transport::Clock& clock) { clock_ = clock; }
   const Counters& counters() const { return counters_.counted; }
   const stats::Group& stats() const { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
