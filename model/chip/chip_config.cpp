@@ -84,6 +84,24 @@ const char* path_state_name(PathStatePlacement p) {
   return "?";
 }
 
+std::vector<std::string> sample_target_list(const std::string& list) {
+  const std::string field = "timing.sample_target_stats";
+  std::vector<std::string> out;
+  for (size_t from = 0; from <= list.size();) {
+    size_t comma = list.find(',', from);
+    if (comma == std::string::npos) comma = list.size();
+    std::string name = list.substr(from, comma - from);
+    from = comma + 1;
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    require(!name.empty(), field + ": an empty entry in \"" + list +
+                               "\" (expected comma-separated statistics, e.g. frame.cycles,memory.dram.bytes)");
+    require(std::find(out.begin(), out.end(), name) == out.end(), field + ": \"" + name + "\" is named twice");
+    out.push_back(std::move(name));
+  }
+  return out;
+}
+
 void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);
   b.bind("design.streams", &design.streams);
@@ -104,6 +122,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.functional_warming", &timing.functional_warming);
   b.bind("timing.fast_forward_batch_quanta", &timing.fast_forward_batch_quanta);
   b.bind("timing.sample_target_error", &timing.sample_target_error);
+  b.bind("timing.sample_target_stats", &timing.sample_target_stats);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
@@ -204,6 +223,7 @@ void ChipConfig::finalize() {
               (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
               std::to_string(timing.sample_target_error));
+  sample_target_list(timing.sample_target_stats);  // its syntax; the names are checked against the tree
   if (timing.mode == transport::TimingMode::kSampled) {
     const auto& t = timing;
     // In 64 bits: a warm-up near 2^32 must not wrap the sum and pass.

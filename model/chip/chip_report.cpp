@@ -112,21 +112,16 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   const stats::BatchMeans& b = *chip_.window_batches();
   batches_ = b.batches(raw);
   windows_ = b.windows();
-  // Frame time as the samples see it: cycles per measured instruction times the instructions
-  // of the frame. A replicate's frame time is the simulated one scaled by its change, so the
-  // rates (frames/s, GB/s) and static energies vary with it as they would.
-  const auto model_cycles = &WindowSampler::model_cycles;
-  const double full_model = model_cycles(b.weighted_total(raw));
-  const double simulated = raw.number("frame.cycles");
+  // A replicate's frame time is the simulated one scaled by the change in the samples' frame
+  // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
+  const SampledEstimate estimate(b.weighted_total(raw), raw.number("frame.cycles"));
   std::vector<std::string> paths;
   raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
   const auto measure = [&](stats::Values r) {
-    if (full_model > 0) r.set("frame.cycles", simulated * model_cycles(r) / full_model);
-    r.scale(extrapolation_factors(r));
-    r.derive();
+    const stats::Values e = estimate(std::move(r));
     std::vector<double> out;
     out.reserve(paths.size());
-    r.visit([&](const std::string&, const stats::Values::Stat& s) { out.push_back(s.null ? 0.0 : s.value()); });
+    e.visit([&](const std::string&, const stats::Values::Stat& s) { out.push_back(s.null ? 0.0 : s.value()); });
     return out;
   };
   const std::vector<double> hw = b.half_widths(raw, measure, kConfidence);
@@ -169,6 +164,15 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
                          {"windows", windows_},
                          {"batches", batches_}};
     if (!interval_note_.empty()) iv["note"] = interval_note_;
+    if (cfg.timing.sample_target_error > 0) {
+      // Each named statistic's interval against the target (-1: no interval was given).
+      nlohmann::json t = {{"error", cfg.timing.sample_target_error}, {"stats", nlohmann::json::object()}};
+      for (const std::string& path : sample_target_list(cfg.timing.sample_target_stats)) {
+        const double got = target_reached(path);
+        t["stats"][path] = {{"relative", got}, {"met", got >= 0 && got <= cfg.timing.sample_target_error}};
+      }
+      iv["target"] = std::move(t);
+    }
     nlohmann::json tree = nlohmann::json::object();
     for (const auto& [path, hw] : half_widths_) {
       nlohmann::json* node = &tree;
@@ -315,33 +319,48 @@ std::string FrameReport::summary() const {
       s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (jackknife); figures without "
                   "a \u00b1 are exact [sampled]\n",
                   100 * kConfidence, windows_, batches_);
-    const double target = cfg.timing.sample_target_error;
-    if (target > 0) {
-      const auto it = half_widths_.find("frame.cycles");
-      const double got = it == half_widths_.end() ? -1.0 : it->second / v.number("frame.cycles");
-      if (got >= 0 && got <= target)
-        s += format("target         frame cycles \u00b1 %.1f%% asked, \u00b1 %.2f%% reached; the period ended at %llu "
-                    "cycles after %llu change(s) [sampled]\n",
-                    100 * target, 100 * got, ull(sm.count("last_period_cycles")), ull(sm.count("period_changes")));
-      else {
-        // Why: the period reached its shortest (the frame ended first), or the sampler still had
-        // room to shorten it, so its last plan expected the target met.
-        const uint64_t last = sm.count("last_period_cycles"), shortest = sm.count("min_period_cycles");
-        const std::string why =
-            last <= shortest
-                ? format("the frame ended before enough windows were measured (the period was %llu cycles at the "
-                         "end, the shortest allowed): use timing.mode=lt for this frame, or accept the wider interval",
-                         ull(last))
-                : format("the sampler's last plan expected it met (the period was %llu cycles at the end, above the "
-                         "shortest allowed, %llu), but the frame's final interval came out wider: run again with a "
-                         "tighter target, or accept the wider interval",
-                         ull(last), ull(shortest));
-        s += format("warning        the error target was not met: frame cycles \u00b1 %.1f%% asked, %s reached; %s\n",
-                    100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval", why.c_str());
-      }
-    }
+    if (cfg.timing.sample_target_error > 0) s += target_lines();
   }
   return s;
+}
+
+double FrameReport::target_reached(const std::string& path) const {
+  const auto it = half_widths_.find(path);
+  const double v = std::fabs(values_.number(path));
+  return it == half_widths_.end() || !(v > 0) ? -1.0 : it->second / v;
+}
+
+std::string FrameReport::target_lines() const {
+  const ChipConfig& cfg = chip_.config();
+  const stats::Values& sm = values_.group("sampling");
+  const double target = cfg.timing.sample_target_error;
+  const auto label = [](const std::string& path) { return path == "frame.cycles" ? std::string("frame cycles") : path; };
+  std::string s, missed;
+  for (const std::string& path : sample_target_list(cfg.timing.sample_target_stats)) {
+    const double got = target_reached(path);
+    if (got >= 0 && got <= target)
+      s += format("target         %s \u00b1 %.1f%% asked, \u00b1 %.2f%% reached [sampled]\n", label(path).c_str(),
+                  100 * target, 100 * got);
+    else
+      missed += format("%s%s \u00b1 %.1f%% asked, %s reached", missed.empty() ? "" : "; ", label(path).c_str(),
+                       100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval");
+  }
+  const uint64_t last = sm.count("last_period_cycles"), shortest = sm.count("min_period_cycles");
+  s += format("target         the period ended at %llu cycles after %llu change(s), planned for the widest of %s [sampled]\n",
+              ull(last), ull(sm.count("period_changes")), cfg.timing.sample_target_stats.c_str());
+  if (missed.empty()) return s;
+  // Why: the period reached its shortest (the frame ended first), or the sampler still had
+  // room to shorten it, so its last plan expected the target met.
+  const std::string why =
+      last <= shortest
+          ? format("the frame ended before enough windows were measured (the period was %llu cycles at the "
+                   "end, the shortest allowed): use timing.mode=lt for this frame, or accept the wider interval",
+                   ull(last))
+          : format("the sampler's last plan expected it met (the period was %llu cycles at the end, above the "
+                   "shortest allowed, %llu), but the frame's final interval came out wider: run again with a "
+                   "tighter target, or accept the wider interval",
+                   ull(last), ull(shortest));
+  return s + format("warning        the error target was not met: %s; %s\n", missed.c_str(), why.c_str());
 }
 
 std::string FrameReport::treelet_lines(const std::string& ci) const {

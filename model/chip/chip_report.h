@@ -63,6 +63,10 @@ class FrameReport {
   std::string pm_points(const std::string& path) const;  // a ratio's: " ± 0.12 points"
   // Streaming designs: the treelet mechanism's lines of the summary (`ci`: the estimates' tag).
   std::string treelet_lines(const std::string& ci) const;
+  // An error target's lines: each named statistic's interval against it, and why one was missed.
+  std::string target_lines() const;
+  // The relative half-width a statistic reached, or -1 when it has no interval.
+  double target_reached(const std::string& path) const;
 };
 
 // The same JSON, for callers that only need that (tests, tools).

@@ -102,7 +102,8 @@ void Chip::register_stats() {
     s.count_probe("measured_cycles", [this] { return schedule_->measured_cycles_before(report_cycle_); },
                   Unit::kCycles, "Cycles of the measured parts (the windows past their warm-up) in the frame.");
     s.level("target_error", [this] { return config_.timing.sample_target_error; }, Unit::kRatio,
-            "The frame-cycle estimate's 95% relative half-width asked for (0: the period is fixed).");
+            "The 95% relative half-width asked of the statistics timing.sample_target_stats names (0: the period is "
+            "fixed).");
     s.level("windows", [this] { return uint64_t{sampler_ ? sampler_->batches().windows() : 0}; }, Unit::kCount,
             "Detailed windows the frame held before its last (partial) one.");
     s.level("period_changes", [this] { return uint64_t{schedule_ ? schedule_->changes() : 0}; }, Unit::kCount,

@@ -26,4 +26,19 @@ stats::Factors extrapolation_factors(const stats::Values& root) {
   return f;
 }
 
+double sampled_model_cycles(const stats::Values& raw) {
+  const double measured = raw.number("sampling.measured_instructions");
+  return measured > 0 ? raw.number("instructions.retired") * raw.number("sampling.measured_cycles") / measured : 0.0;
+}
+
+SampledEstimate::SampledEstimate(const stats::Values& weighted_raw, double simulated_cycles)
+    : simulated_cycles_(simulated_cycles), full_model_cycles_(sampled_model_cycles(weighted_raw)) {}
+
+stats::Values SampledEstimate::operator()(stats::Values raw) const {
+  if (full_model_cycles_ > 0) raw.set("frame.cycles", simulated_cycles_ * sampled_model_cycles(raw) / full_model_cycles_);
+  raw.scale(extrapolation_factors(raw));
+  raw.derive();
+  return raw;
+}
+
 }  // namespace strata::chip

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
+#include "model/chip/sampling_factors.h"
 
 namespace strata::chip {
 
@@ -15,16 +18,43 @@ WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& con
       turns_(turns),
       progress_(std::move(progress)),
       batches_(&WindowSampler::measured) {
+  // Checked when the chip is built, so a misspelt name stops the run before it starts.
+  targets_ = target_stats(config_, stats::Values::snapshot(root_));
+  windows_.resize(targets_.size());
+  last_counts_.assign(targets_.size(), 0.0);
   SC_THREAD(run);
+}
+
+std::vector<std::string> WindowSampler::target_stats(const ChipConfig& config, const stats::Values& tree) {
+  const std::string field = "timing.sample_target_stats";
+  std::vector<std::string> names = sample_target_list(config.timing.sample_target_stats);
+  for (const std::string& name : names) {
+    if (name == "frame.cycles") continue;  // the samples' frame time (sampled_model_cycles)
+    const auto fail = [&](const std::string& why) {
+      throw std::invalid_argument(field + ": \"" + name + "\" " + why);
+    };
+    if (!tree.has(name)) fail("is not a statistic (docs/statistics.md lists them)");
+    const stats::Values::Stat* s = nullptr;
+    try {
+      s = &tree.stat(name);
+    } catch (const std::out_of_range&) {
+      fail("is a group, not a statistic");
+    }
+    using stats::Kind;
+    using stats::Unit;
+    const Unit u = s->def->unit;
+    const bool additive = u == Unit::kCount || u == Unit::kBytes || u == Unit::kCycles || u == Unit::kNanojoules;
+    if (s->def->kind == Kind::kCount && s->basis == stats::Basis::kExact)
+      fail("is exact in sampled timing (counted in full, fast-forward included): it has no interval to hold to a target");
+    if (s->def->kind == Kind::kLevel || s->def->kind == Kind::kRatio || !additive)
+      fail("is a level, a ratio or a rate: a target holds for counts (events, bytes, cycles) and their sums "
+           "(energy), whose interval is relative to the figure");
+  }
+  return names;
 }
 
 bool WindowSampler::measured(const std::string& path, const stats::Values::Stat& s) {
   return s.basis != stats::Basis::kExact || path.compare(0, 9, "sampling.") == 0;
-}
-
-double WindowSampler::model_cycles(const stats::Values& v) {
-  const double measured = v.number("sampling.measured_instructions");
-  return measured > 0 ? v.number("instructions.retired") * v.number("sampling.measured_cycles") / measured : 0.0;
 }
 
 uint64_t WindowSampler::min_period() const {
@@ -75,48 +105,64 @@ void WindowSampler::run() {
     // A window stands for its period of the frame: weighted against the first period.
     const double weight = double(period) / double(config_.timing.sample_period_cycles);
     batches_.add_window(cumulative, weight);
-    const double cycles = cumulative.number("sampling.measured_cycles");
-    const double instructions = cumulative.number("sampling.measured_instructions");
-    windows_.push_back({weight, cycles - last_cycles_, instructions - last_instructions_});
-    last_cycles_ = cycles;
-    last_instructions_ = instructions;
     weight_sum_ += weight;
-    if (config_.timing.sample_target_error > 0) retarget(at);
+    if (!(config_.timing.sample_target_error > 0)) continue;
+    const double instructions = cumulative.number("sampling.measured_instructions");
+    const std::vector<double> counts = target_counts(cumulative);
+    for (size_t k = 0; k < targets_.size(); ++k)
+      windows_[k].push_back({weight, counts[k] - last_counts_[k], instructions - last_instructions_});
+    last_counts_ = counts;
+    last_instructions_ = instructions;
+    retarget(at, cumulative);
   }
 }
 
-double WindowSampler::relative_half_width() const {
-  // The same delete-one-batch jackknife as BatchMeans, on the ratio cycles / instruction, with
-  // the windows in at most 32 consecutive batches.
-  const size_t n = windows_.size(), per = (n + 31) / 32, b = (n + per - 1) / per;
-  if (b < 2) return 0.0;
-  std::vector<std::pair<double, double>> sums(b, {0.0, 0.0});
-  double c = 0, m = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const Window& w = windows_[i];
-    sums[i / per].first += w.weight * w.cycles;
-    sums[i / per].second += w.weight * w.instructions;
-    c += w.weight * w.cycles;
-    m += w.weight * w.instructions;
+std::vector<double> WindowSampler::target_counts(const stats::Values& cumulative) const {
+  stats::Values derived = cumulative;  // a formula (DRAM bytes = read + written) over the raw counts
+  derived.derive();
+  std::vector<double> out;
+  out.reserve(targets_.size());
+  for (const std::string& t : targets_) {
+    const double v = t == "frame.cycles" ? derived.number("sampling.measured_cycles") : derived.number(t);
+    out.push_back(std::isfinite(v) ? v : 0.0);
   }
-  if (!(m > 0)) return 0.0;
-  std::vector<double> replicates;
-  for (const auto& [bc, bm] : sums) replicates.push_back(m > bm ? (c - bc) / (m - bm) : c / m);
-  return stats::jackknife_half_width(replicates, kConfidence) / (c / m);
+  return out;
+}
+
+std::vector<double> WindowSampler::relative_half_widths(uint64_t now, const stats::Values& cumulative) const {
+  // The windows so far against the instructions retired so far: the estimate of the frame up to
+  // `now`, and its interval, exactly as the report would give them if the frame ended here.
+  const stats::Values centre_raw = batches_.weighted_total(cumulative);
+  const SampledEstimate estimate(centre_raw, double(now));
+  const auto read = [this](const stats::Values& e) {
+    std::vector<double> out;
+    out.reserve(targets_.size());
+    for (const std::string& t : targets_) out.push_back(e.number(t));
+    return out;
+  };
+  const std::vector<double> centre = read(estimate(centre_raw));
+  const std::vector<double> hw =
+      batches_.half_widths(cumulative, [&](stats::Values r) { return read(estimate(std::move(r))); }, kConfidence);
+  std::vector<double> relative(targets_.size(), 0.0);
+  if (hw.empty()) return relative;
+  for (size_t k = 0; k < targets_.size(); ++k)
+    if (std::isfinite(hw[k]) && std::isfinite(centre[k]) && std::fabs(centre[k]) > 0)
+      relative[k] = hw[k] / std::fabs(centre[k]);
+  return relative;
 }
 
 double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t recent) {
   double c = 0, m = 0;
   for (const Window& w : windows) {
-    c += w.weight * w.cycles;
-    m += w.weight * w.instructions;
+    c += w.weight * w.value;
+    m += w.weight * w.basis;
   }
   if (windows.empty() || !(m > 0)) return 0.0;
   const double ratio = c / m;
   double past = 0, last = 0;
   const size_t first_recent = windows.size() - std::min(std::max<size_t>(recent, 1), windows.size());
   for (size_t i = 0; i < windows.size(); ++i) {
-    const double residual = windows[i].cycles - ratio * windows[i].instructions;
+    const double residual = windows[i].value - ratio * windows[i].basis;
     past += windows[i].weight * windows[i].weight * residual * residual;
     if (i >= first_recent) last += residual * residual;
   }
@@ -137,12 +183,11 @@ double WindowSampler::tail_weight(const SamplingSchedule& schedule, uint64_t fra
   return double(span) / double(base_period);
 }
 
-void WindowSampler::retarget(uint64_t now) {
-  if (windows_.size() < kPilotWindows) return;
+void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
+  if (targets_.empty() || windows_.front().size() < kPilotWindows) return;
   const double fraction = progress_.fraction();
   if (!(fraction > 0.02)) return;  // too early to tell how long the frame is
-  const double relative = relative_half_width();
-  if (!(relative > 0)) return;
+  const std::vector<double> relative = relative_half_widths(now, cumulative);
   // In units of the first period: a window of weight w stands for w periods, and its measured
   // counts are scaled by w. So window i adds w_i^2 e_i^2 to the frame total's variance (e_i its
   // residual, spread_weight) and w_i to the total. If the windows to come all have weight W
@@ -156,7 +201,11 @@ void WindowSampler::retarget(uint64_t now) {
   // first 14 windows, under 3% later). Planning the rest of the frame by the spread of all
   // windows so far (P = sum w^2) packed the next fifth of the frame with 28 windows where the
   // cap allows 6, and their unequal weights widened every interval.
-  // The period grows (up to max_period) as well as shrinks.
+  // The period grows (up to max_period) as well as shrinks. Each named statistic asks for its
+  // own period; the shortest is taken, so the widest interval decides. (A window's residual is
+  // taken against its measured instructions for every statistic: the estimator scales some
+  // counts by data or stream operations instead, which move with the instructions closely
+  // enough for a plan, and the interval it plans from is the estimator's own.)
   // Planned to a little inside the target: the half-width so far is itself an estimate, from
   // at most 32 batches (a relative standard error of about 1 / sqrt(2 x 31) = 13%), and a plan
   // that aims at the target exactly misses it about half the time.
@@ -165,9 +214,15 @@ void WindowSampler::retarget(uint64_t now) {
   const double frame = double(now) / std::min(1.0, fraction);
   const double remaining_cycles = std::max(0.0, frame - double(now));
   const double remaining = remaining_cycles / base;
-  const double gain = target * (frame / base) / (relative * weight_sum_);
-  const double weight = remaining > 0 ? spread_weight(windows_, kRecentWindows) * (gain * gain - 1.0) / remaining : 0.0;
-  const double chosen = std::max(0.0, weight) * base;
+  double chosen = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < targets_.size(); ++k) {
+    if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
+    const double gain = target * (frame / base) / (relative[k] * weight_sum_);
+    const double weight =
+        remaining > 0 ? spread_weight(windows_[k], kRecentWindows) * (gain * gain - 1.0) / remaining : 0.0;
+    chosen = std::min(chosen, std::max(0.0, weight) * base);
+  }
+  if (!std::isfinite(chosen)) return;
   const uint64_t period =
       std::clamp<uint64_t>(static_cast<uint64_t>(std::min(chosen, 1e18)), min_period(),
                            std::max(min_period(), max_period(frame)));

@@ -5,13 +5,15 @@
 //
 // With an error target (timing.sample_target_error), the sampler also chooses the period: after
 // a pilot of kPilotWindows windows at the configured period, at every window it estimates the
-// frame-cycle interval from the windows so far and how long the frame will be (from the share
-// of pixels done), and sets the period of the windows to come to the longest that still
-// brings the frame's interval to the target: shorter than the configured one when the target
-// needs more windows, longer when it needs fewer.
+// intervals of the statistics the target names (timing.sample_target_stats: frame cycles, DRAM
+// bytes and L2 accesses by default) from the windows so far, by the report's own jackknife, and
+// how long the frame will be (from the share of pixels done). It sets the period of the windows
+// to come to the longest that still brings every named interval to the target: shorter than the
+// configured one when the target needs more windows, longer when it needs fewer.
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 #include <systemc>
 
@@ -41,9 +43,12 @@ class WindowSampler : public sc_core::sc_module {
   // The counts a window contributes to: every extrapolated count, and the sampling group's
   // measured denominators. Exact totals (instructions, rays) stay whole in every replicate.
   static bool measured(const std::string& path, const stats::Values::Stat& s);
-  // The frame time the samples imply: instructions retired x measured cycles / measured
-  // instructions (the report scales its replicates' frame time by this).
-  static double model_cycles(const stats::Values& v);
+  // The statistics an error target holds for, parsed from timing.sample_target_stats (a
+  // comma-separated list of dotted paths). Each must be an extrapolated count or a formula over
+  // counts (bytes, cycles, energy); frame.cycles stands for the samples' frame time. Throws
+  // std::invalid_argument naming the field and the entry otherwise.
+  static std::vector<std::string> target_stats(const ChipConfig& config, const stats::Values& tree);
+  const std::vector<std::string>& targets() const { return targets_; }
 
   // The shortest period the schedule may take: the detailed window, and on each side of the
   // sampler's wake-up a margin no TM runs ahead of global time by.
@@ -58,13 +63,15 @@ class WindowSampler : public sc_core::sc_module {
   static constexpr double kPlanningMargin = 0.85;  // plans for 85% of the target (retarget)
   static constexpr size_t kRecentWindows = 8;      // whose spread predicts the windows to come
 
-  // One window's measured counts (its measured part, not scaled by its weight) and weight.
+  // One window's weight and, for one target statistic, its measured count (its measured part,
+  // not scaled by its weight) and the measured instructions it came with.
   struct Window {
-    double weight, cycles, instructions;
+    double weight, value, basis;
   };
   // The error target's plan needs the spread the windows to come will add. A window's
-  // contribution to the frame-cycle estimate's variance is weight^2 x residual^2, its residual
-  // being its measured cycles less the cycles its instructions take at the ratio so far. This
+  // contribution to an estimate's variance is weight^2 x residual^2, its residual being its
+  // measured count less what its instructions give at the ratio so far (for frame cycles: its
+  // cycles less the cycles its instructions take). This
   // returns the windows' sum of weight^2 x residual^2 over the mean residual^2 of the last
   // `recent`: for windows of one spread it is the sum of weight^2 they would have under the
   // old rule; when the spread has fallen since the frame's start (cold caches, the first
@@ -78,10 +85,13 @@ class WindowSampler : public sc_core::sc_module {
 
  private:
   void run();
-  void retarget(uint64_t now);
-  // The frame-cycle interval's relative half-width from the windows so far (the report's
-  // estimator, on the two counts it needs: cheap enough to run at every window).
-  double relative_half_width() const;
+  void retarget(uint64_t now, const stats::Values& cumulative);
+  // Each target's relative half-width from the windows so far, by the report's estimator
+  // (SampledEstimate and the batches' jackknife); 0 where no interval can be given yet.
+  std::vector<double> relative_half_widths(uint64_t now, const stats::Values& cumulative) const;
+  // The target statistics' measured counts in a raw cumulative tree (frame.cycles: the
+  // measured cycles).
+  std::vector<double> target_counts(const stats::Values& cumulative) const;
 
   const ChipConfig& config_;
   SamplingSchedule& schedule_;
@@ -89,8 +99,10 @@ class WindowSampler : public sc_core::sc_module {
   TurnOrder& turns_;  // it wakes in turn with the TMs, after those at the same cycle
   Progress progress_;
   stats::BatchMeans batches_;
-  std::vector<Window> windows_;  // for the error target
-  double last_cycles_ = 0, last_instructions_ = 0;
+  std::vector<std::string> targets_;
+  std::vector<std::vector<Window>> windows_;  // per target statistic, for the error target
+  std::vector<double> last_counts_;
+  double last_instructions_ = 0;
   double weight_sum_ = 0;  // of the windows so far
 };
 

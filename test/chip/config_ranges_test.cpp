@@ -241,6 +241,9 @@ TEST(ConfigRanges, EachRangeIsWhatTheConfigAccepts) {
     } else if (r.accepted == "`all` or TM indices below `tms`") {  // tm.pipeline_impl_tms (tms: 128)
       for (const char* v : {"\"all\"", "\"0\"", "\"0,127\"", "127"}) expect_accepted(r, v);
       for (const char* v : {"\"0,128\"", "128", "\"\"", "\"0,\"", "\"x\"", "-1", "true"}) expect_refused(r, v);
+    } else if (r.accepted == "comma-separated statistics") {  // timing.sample_target_stats
+      for (const char* v : {"\"frame.cycles\"", "\"memory.dram.bytes, frame.cycles\""}) expect_accepted(r, v);
+      for (const char* v : {"\"\"", "\"frame.cycles,\"", "\"a,,b\"", "\"a,a\"", "1"}) expect_refused(r, v);
     } else if (r.accepted.rfind("one of ", 0) == 0) {
       for (const std::string& name : backticked(r.accepted)) expect_accepted(r, "\"" + name + "\"");
       expect_refused(r, "\"none-of-these\"");
