@@ -228,6 +228,56 @@ class LocalTest(Fixture):
         self.assertEqual(self.sweep(spec), 0)
         self.assertEqual([r["status"] for r in self.rows()], ["done", "done"])
 
+    def finished_folders(self):
+        runs = os.path.join(self.dir, "out", "runs")
+        return [os.path.join(runs, r) for r in sorted(os.listdir(runs))]
+
+    def test_a_cut_off_done_marker_names_the_file_and_the_run_runs_again(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "b"]})
+        self.assertEqual(self.sweep(spec), 0)
+        cut = self.finished_folders()[0]
+        with open(os.path.join(cut, "done.json"), "w") as f:
+            f.write('{"wall_sec')
+        # --collect runs nothing: the run is failed, with the file named, and no traceback.
+        self.assertEqual(self.sweep(spec, "--collect"), 1)
+        failed = [r for r in self.rows() if r["status"] == "failed"]
+        self.assertEqual(len(failed), 1)
+        self.assertIn(os.path.join(cut, "done.json"), failed[0]["error"])
+        # The next sweep runs it again, once.
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual(len(self.calls()), 3)
+        self.assertEqual([r["status"] for r in self.rows()], ["done", "done"])
+        for empty in ("", "[]"):  # empty, or JSON that is not a record
+            with open(os.path.join(cut, "done.json"), "w") as f:
+                f.write(empty)
+            self.assertFalse(run_mod.is_done(cut))
+
+    def test_a_done_run_whose_stats_became_unreadable_runs_again(self):
+        spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "b"]})
+        self.assertEqual(self.sweep(spec), 0)
+        broken = self.finished_folders()[1]
+        with open(os.path.join(broken, "out", "stats.json"), "w") as f:
+            f.write('{"frame": {')
+        self.assertEqual(self.sweep(spec, "--collect"), 1)
+        self.assertIn("stats.json", [r for r in self.rows() if r["status"] == "failed"][0]["error"])
+        self.assertEqual(self.sweep(spec), 0)
+        self.assertEqual(len(self.calls()), 3)
+        self.assertEqual([r["status"] for r in self.rows()], ["done", "done"])
+
+    def test_an_output_that_is_a_file_is_an_argument_error(self):
+        blocker = os.path.join(self.dir, "blocker")
+        open(blocker, "w").close()
+        for field in ("output", "runs"):
+            spec = self.write_spec(name=f"{field}.json", **{field: "blocker/out"})
+            self.assertEqual(self.sweep(spec), 2, field)
+        self.assertEqual(self.calls(), [])
+        # A read-only output folder, where permissions apply (root bypasses them).
+        if os.geteuid() != 0:
+            ro = os.path.join(self.dir, "ro")
+            os.makedirs(ro)
+            os.chmod(ro, 0o555)
+            self.assertEqual(self.sweep(self.write_spec(name="ro.json", output="ro")), 2)
+
     def test_ctrl_c_keeps_finished_runs(self):
         spec = self.write_spec(axes={"design": ["trax"], "scene": ["a", "hang"]})
         env = dict(os.environ, PYTHONPATH=HERE)

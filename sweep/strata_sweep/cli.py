@@ -48,8 +48,16 @@ def main(argv=None):
               file=sys.stderr)
         return 2
     root, out = spec.store, spec.output  # the run folders, and the tables and plots
-    os.makedirs(root, exist_ok=True)
-    os.makedirs(out, exist_ok=True)
+    for folder, field in ((root, "runs"), (out, "output")):
+        try:
+            os.makedirs(folder, exist_ok=True)
+        except OSError as e:
+            print(f"strata-sweep: error: {a.spec}: {field}: cannot create the folder {folder}: "
+                  f"{e.strerror or e}", file=sys.stderr)
+            return 2
+        if not os.access(folder, os.W_OK | os.X_OK):
+            print(f"strata-sweep: error: {a.spec}: {field}: the folder {folder} is not writable", file=sys.stderr)
+            return 2
     label = os.path.basename(out)
     unique = list({run_mod.run_key(p): p for p in runs}.values())
     pending = [p for p in unique if not run_mod.is_done(run_mod.folder_of(root, p))]

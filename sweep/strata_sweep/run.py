@@ -115,8 +115,38 @@ def write_json_atomically(path, obj):
     os.replace(tmp, path)
 
 
-def is_done(folder):
+def read_done(folder):
+    """done.json's record, or None when it is missing, cut off or not a JSON object."""
+    try:
+        with open(os.path.join(folder, "done.json")) as f:
+            done = json.load(f)
+    except (OSError, ValueError):
+        return None
+    return done if isinstance(done, dict) else None
+
+
+def has_done_marker(folder):
+    """Cheap (no stats.json read): for progress lines polled while runs are going."""
     return os.path.exists(os.path.join(folder, "done.json"))
+
+
+def is_done(folder):
+    """Done means a whole done.json and a finished stats.json. A cut-off marker, or a marker
+    whose stats.json became unreadable, is not done: the run runs again."""
+    return read_done(folder) is not None and read_finished_stats(folder) is not None
+
+
+def not_done_reason(folder):
+    """Why a run with a done.json is nonetheless not done, or None."""
+    marker = os.path.join(folder, "done.json")
+    if not os.path.exists(marker):
+        return None
+    if read_done(folder) is None:
+        return f"{marker} is cut off or not a JSON object: the run runs again"
+    if read_finished_stats(folder) is None:
+        return (f"{os.path.join(folder, 'out', 'stats.json')} is missing, cut off or not a finished frame "
+                "although done.json exists: the run runs again")
+    return None
 
 
 def read_finished_stats(folder):
@@ -141,7 +171,7 @@ def execute(params, root, timeout, sim=None):
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, "lock"), "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
-        if is_done(folder):
+        if read_done(folder) is not None:
             stats = read_finished_stats(folder)
             if stats is not None:
                 return stats, None
@@ -188,12 +218,13 @@ def _execute_locked(params, folder, timeout, sim):
 def load_result(root, params):
     """(stats, done_info, error) of a run from its folder, whatever ran it."""
     folder = folder_of(root, params)
-    if is_done(folder):
-        stats = read_finished_stats(folder)
-        if stats is not None:
-            with open(os.path.join(folder, "done.json")) as f:
-                return stats, json.load(f), None
-        return None, None, "done.json present but stats.json unreadable"
+    done = read_done(folder)
+    stats = read_finished_stats(folder) if done is not None else None
+    if stats is not None:
+        return stats, done, None
+    reason = not_done_reason(folder)
+    if reason is not None:
+        return None, None, reason
     try:
         with open(os.path.join(folder, "error.json")) as f:
             return None, None, json.load(f)["error"]

@@ -157,7 +157,7 @@ def follow(job_id, pending, root, label="sweep", poll_seconds=2.0):
     try:
         while True:
             queued = tasks_in_queue(job_id)
-            done = sum(run_mod.is_done(k) for k in keys)
+            done = sum(run_mod.has_done_marker(k) for k in keys)
             failed = sum(failed_now(k) for k in keys)
             running = sum(1 for s in queued.values() if s == "RUNNING")
             if not queued:
