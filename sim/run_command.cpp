@@ -71,6 +71,13 @@ void run_frame(RunOptions o) {
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
   check_render_settings(o.settings);
   chip::ChipConfig config = chip::load_chip_config(o.config_file, o.overrides);
+  if (config.timing.mode != transport::TimingMode::kSampled) {
+    std::string fields;
+    for (const std::string& f : chip::sampled_only_fields_changed(config.timing)) fields += (fields.empty() ? "" : ", ") + f;
+    if (!fields.empty())
+      std::fprintf(stderr, "warning: %s set, but timing.mode is %s: sampled timing's options do nothing in this mode\n",
+                   fields.c_str(), to_string(config.timing.mode));
+  }
   // Treelets are exactly one L1 data cache (ARCHITECTURE.md, "Treelets").
   o.source.params.treelet_bytes = config.l1d.size_bytes;
   const LoadedScene loaded = load_scene_and_image(o.source);
@@ -91,6 +98,11 @@ void run_frame(RunOptions o) {
   // Before the simulation, not after it: an unwritable --out or --vcd fails in a second.
   require_writable_dir(o.out_dir, "--out");
   if (!o.vcd.empty()) require_writable_file(o.vcd, "--vcd");
+  // 0 would wake the progress monitor every cycle, and a 0-cycle VCD window traces nothing.
+  if (o.progress_cycles == 0)
+    throw std::runtime_error("--progress-cycles 0: must be at least 1 (for no progress lines, use --quiet)");
+  if (o.vcd_window_cycles == 0)
+    throw std::runtime_error("--vcd-window 0: must be at least 1 cycle (a 0-cycle window traces no signal)");
   if (o.vcd_start > o.vcd_end)
     throw std::runtime_error("--vcd-start " + std::to_string(o.vcd_start) + " is after --vcd-end " +
                              std::to_string(o.vcd_end));
@@ -128,6 +140,10 @@ void run_frame(RunOptions o) {
   std::printf("%s", report.summary().c_str());
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
+  if (!o.vcd.empty() && o.vcd_start >= chip.cycles())
+    std::printf("warning        --vcd-start %llu is at or after the frame's last cycle (%llu): the VCD holds the "
+                "signals but no sample\n",
+                static_cast<unsigned long long>(o.vcd_start), static_cast<unsigned long long>(chip.cycles()));
   if (!o.vcd.empty() && config.pipeline_impl == chip::PipelineImpl::kRtl)
     std::printf("wrote          the RTL pipelines' VCD: %s (one per TM using the RTL)\n",
                 (vcd_base + ".rtl_tm<k>.vcd").c_str());

@@ -1,5 +1,7 @@
 #include "model/chip/chip_config.h"
 
+#include <cstdio>
+
 #include "firmware/abi/frame_abi.h"
 
 #include <fstream>
@@ -39,6 +41,14 @@ void require(bool ok, const std::string& message) {
   if (!ok) throw ConfigError(message);
 }
 
+// A real number as it was given (%g): std::to_string prints 1e-12 as "0.000000", which reads as
+// if an allowed 0 had been refused (issue 39, F12).
+std::string real(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 // tm.pipeline_impl_tms: "all" (every TM), or TM indices below `tms`, comma-separated.
 std::vector<bool> parse_tm_list(const std::string& text, uint32_t tms) {
   const std::string field = "tm.pipeline_impl_tms";
@@ -72,7 +82,7 @@ void EnergyConfig::validate() const {
     // An upper bound too: 1e308 nJ per operation overflows the frame's sums to infinity.
     if (!(v >= 0.0 && v <= 1e6))
       throw std::invalid_argument(std::string(field) + ": energies must be 0..1e6 nJ per operation, got " +
-                                  std::to_string(v));
+                                  real(v));
 }
 
 const char* path_state_name(PathStatePlacement p) {
@@ -99,6 +109,22 @@ std::vector<std::string> sample_target_list(const std::string& list) {
     require(std::find(out.begin(), out.end(), name) == out.end(), field + ": \"" + name + "\" is named twice");
     out.push_back(std::move(name));
   }
+  return out;
+}
+
+std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
+  const TimingConfig d;
+  std::vector<std::string> out;
+  const auto check = [&out](bool changed, const char* name) {
+    if (changed) out.push_back(name);
+  };
+  check(t.sample_period_cycles != d.sample_period_cycles, "timing.sample_period_cycles");
+  check(t.sample_detail_cycles != d.sample_detail_cycles, "timing.sample_detail_cycles");
+  check(t.sample_warmup_cycles != d.sample_warmup_cycles, "timing.sample_warmup_cycles");
+  check(t.functional_warming != d.functional_warming, "timing.functional_warming");
+  check(t.fast_forward_batch_quanta != d.fast_forward_batch_quanta, "timing.fast_forward_batch_quanta");
+  check(t.sample_target_error != d.sample_target_error, "timing.sample_target_error");
+  check(t.sample_target_stats != d.sample_target_stats, "timing.sample_target_stats");
   return out;
 }
 
@@ -222,7 +248,7 @@ void ChipConfig::finalize() {
   require(timing.sample_target_error == 0.0 ||
               (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
-              std::to_string(timing.sample_target_error));
+              real(timing.sample_target_error));
   sample_target_list(timing.sample_target_stats);  // its syntax; the names are checked against the tree
   if (timing.mode == transport::TimingMode::kSampled) {
     const auto& t = timing;

@@ -53,6 +53,12 @@ struct DesignConfig {
   PathStatePlacement path_state = PathStatePlacement::kCompact;  // streaming designs only
 };
 
+struct TimingConfig;
+// The sampled-timing fields (timing.sample_*, functional_warming, fast_forward_batch_quanta) whose
+// value differs from the built-in default: in LT or precise mode they do nothing, and the run
+// warns that they were set.
+std::vector<std::string> sampled_only_fields_changed(const TimingConfig& timing);
+
 struct TimingConfig {
   transport::TimingMode mode = transport::TimingMode::kLooselyTimed;
   uint32_t quantum_cycles = 1000;  // LT: how far a TM may run ahead of global time

@@ -351,8 +351,13 @@ std::string FrameReport::target_lines() const {
   if (missed.empty()) return s;
   // Why: the period reached its shortest (the frame ended first), or the sampler still had
   // room to shorten it, so its last plan expected the target met.
+  const uint64_t windows = sm.count("windows");
   const std::string why =
-      last <= shortest
+      windows < WindowSampler::kPilotWindows
+          ? format("no plan was possible: the frame held %llu window(s) before its last, and the sampler plans after "
+                   "%zu (lower timing.sample_period_cycles, or use timing.mode=lt for this frame)",
+                   ull(windows), WindowSampler::kPilotWindows)
+      : last <= shortest
           ? format("the frame ended before enough windows were measured (the period was %llu cycles at the "
                    "end, the shortest allowed): use timing.mode=lt for this frame, or accept the wider interval",
                    ull(last))

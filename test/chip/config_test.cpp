@@ -125,6 +125,9 @@ TEST(ChipConfig, OutOfRangeValuesAreRefusedNamingTheField) {
       {trax, "memory.l1i.line_bytes=1", "l1i.line_bytes: must be at least 16"},
       {trax, "energy.fp_mul_nj=1e308", "energies must be 0..1e6 nJ"},
       {trax, "memory.dram.access_energy_nj=1e308", "dram.access_energy_nj: must be 0..1e6 nJ"},
+      // Issue 39 F12: a tiny value is printed as given, not as "0.000000" (0 is allowed).
+      {trax, "timing.sample_target_error=1e-12", "relative half-width in [0.001, 0.5], got 1e-12"},
+      {trax, "energy.fp_add_nj=-1e-09", "fp_add_nj: energies must be 0..1e6 nJ per operation, got -1e-09"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.file, {"timing.mode=sampled", c.set});

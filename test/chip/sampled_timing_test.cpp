@@ -316,6 +316,23 @@ TEST_P(SampledTiming, APeriodLongerThanTheFrameKeepsTheMemoryFigures) {
   EXPECT_GT(largest["memory"]["dram"]["bytes"].get<double>(), 0.0);
 }
 
+// A frame shorter than the sampler's pilot never got a plan: the warning says so, rather than
+// that a plan expected the target met (issue 39, minor).
+TEST_P(SampledTiming, ATargetOnAFrameTooShortToPlanSaysNoPlanWasPossible) {
+  TempDir dir;
+  const nlohmann::json j = run_frame(dir, GetParam(), "sampled", "-short",
+                                     " --set timing.sample_period_cycles=10000000 --set timing.sample_target_error=0.05");
+  ASSERT_FALSE(j.is_null());
+  EXPECT_EQ(j["sampling"]["windows"], 0);
+  const std::string summary = read_text(dir.path() / "log.txt");
+  EXPECT_NE(summary.find("the error target was not met: frame cycles \u00b1 5.0% asked, no interval reached"),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("no plan was possible: the frame held 0 window(s) before its last"), std::string::npos)
+      << summary;
+  EXPECT_EQ(summary.find("last plan expected it met"), std::string::npos) << summary;
+}
+
 std::string design_name(const ::testing::TestParamInfo<const char*>& p) {
   return std::string(p.param) == "trax" ? "trax" : "pipelines";
 }

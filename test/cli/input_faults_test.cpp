@@ -68,5 +68,31 @@ TEST(InputFaults, AFolderAsConfigOrFirmwareIsNamed) {
       << r.output;
 }
 
+// Issue 39 (minor): sampled timing's options set in another mode do nothing, and the run says so
+// (it still runs); in sampled mode, or left at their defaults, there is no warning.
+TEST(InputFaults, SampledOnlyOptionsInAnotherModeAreWarnedAbout) {
+  TempDir dir;
+  const auto run = [&](const std::string& mode, const std::string& set) {
+    std::vector<std::string> args = {kSim, "run", "--config", std::string(STRATA_SOURCE_DIR) + "/sim/configs/trax.json",
+                                     "--scene", "cornell:size=0.2", "--res", "8x8", "--set", "tms=1", "--no-cache",
+                                     "--quiet", "--set", "timing.mode=" + mode, "--out", (dir / mode).string()};
+    if (!set.empty()) args.insert(args.end(), {"--set", set});
+    return run_program(args);
+  };
+  ProgramResult r = run("lt", "timing.sample_target_error=0.02");
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: timing.sample_target_error set, but timing.mode is loosely-timed"), std::string::npos)
+      << r.output;
+  r = run("precise", "timing.sample_period_cycles=50000");
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: timing.sample_period_cycles set, but timing.mode is precise"), std::string::npos)
+      << r.output;
+  r = run("lt", "");
+  EXPECT_EQ(r.output.find("sampled timing's options do nothing"), std::string::npos) << r.output;
+  r = run("sampled", "timing.sample_target_error=0.5");
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(r.output.find("sampled timing's options do nothing"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace strata::sim::testing

@@ -89,6 +89,41 @@ TEST(OutputFaults, AVcdWindowThatEndsBeforeItStartsIsRefused) {
   EXPECT_NE(r.output.find("--vcd-start 100 is after --vcd-end 50"), std::string::npos) << r.output;
 }
 
+// Issue 39 F3, F4: 0 cycles between progress lines would wake the monitor every cycle, and a
+// 0-cycle VCD window traces no signal; both are refused before the simulation.
+TEST(OutputFaults, ZeroProgressCyclesAndAZeroCycleVcdWindowAreRefused) {
+  TempDir dir;
+  std::vector<std::string> progress = tiny_run(dir / "run");
+  progress.insert(progress.end(), {"--progress-cycles", "0"});
+  ProgramResult r = run_program(progress);
+  EXPECT_NE(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("--progress-cycles 0: must be at least 1"), std::string::npos) << r.output;
+  std::vector<std::string> vcd = tiny_run(dir / "run");
+  vcd.insert(vcd.end(), {"--vcd", (dir / "w.vcd").string(), "--vcd-window", "0"});
+  r = run_program(vcd);
+  EXPECT_NE(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("--vcd-window 0: must be at least 1 cycle"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("frame "), std::string::npos) << r.output;  // it never ran
+  EXPECT_FALSE(std::filesystem::exists(dir / "w.vcd"));
+}
+
+// A VCD time window that starts after the frame's end selects no sample: the run says so.
+TEST(OutputFaults, AVcdWindowPastTheFrameIsReported) {
+  TempDir dir;
+  std::vector<std::string> late = tiny_run(dir / "run");
+  late.insert(late.end(), {"--vcd", (dir / "late.vcd").string(), "--vcd-start", "100000000"});
+  ProgramResult r = run_program(late);
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning        --vcd-start 100000000 is at or after the frame's last cycle"),
+            std::string::npos)
+      << r.output;
+  std::vector<std::string> early = tiny_run(dir / "run2");
+  early.insert(early.end(), {"--vcd", (dir / "early.vcd").string(), "--vcd-start", "10"});
+  r = run_program(early);
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(r.output.find("--vcd-start 10 is at or after"), std::string::npos) << r.output;
+}
+
 TEST(OutputFaults, RenderWithAFullDiskFails) {
   TempDir dir;
   const auto out = dir / "render";
