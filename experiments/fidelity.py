@@ -2,7 +2,8 @@
 """The fidelity report: one frame in every timing mode, each measured against precise.
 
     scripts/fidelity [scene] [design] [WxH] [--out DIR] [--jobs N]
-    (defaults: sibenik strata-pipelines 128x128, out/fidelity/<scene>-<design>-<WxH>)
+    (defaults: sibenik strata-pipelines 128x128, out/fidelity/<scene>-<design>-<WxH>, one
+    frame per core)
 
 Runs the frame in precise timing, loosely timed at quanta of 100, 1,000 and 10,000 cycles (and at
 1,000 with stream and global-register operations in arrival order), and
@@ -15,11 +16,13 @@ matplotlib."""
 import argparse
 import csv
 import os
+import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "sweep"))
 from strata_sweep import local, run as run_mod  # noqa: E402
+import arguments  # noqa: E402  (experiments/, this script's folder)
 
 MODES = [("precise", {"timing.mode": "precise"}),
          ("lt q=100", {"timing.mode": "lt", "timing.quantum_cycles": 100}),
@@ -54,20 +57,43 @@ def error(value, reference, unit):
     return 100.0 * (value - reference) if unit == "points" else 100.0 * (value / reference - 1.0)
 
 
+def build():
+    """scripts/build, its output on stdout dropped as the wrapper always did. Here rather than in
+    scripts/fidelity, so that a mistyped argument is refused before a build, not after one."""
+    status = subprocess.run([os.path.join(ROOT, "scripts", "build")], stdout=subprocess.DEVNULL).returncode
+    if status != 0:
+        sys.exit(status)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    # The arguments are checked as they are parsed (experiments/arguments.py): a bad one is an
+    # argparse error naming it (exit 2), before any build, folder or frame.
     ap.add_argument("scene", nargs="?", default="sibenik")
     ap.add_argument("design", nargs="?", default="strata-pipelines")
-    ap.add_argument("res", nargs="?", default="128x128")
-    ap.add_argument("--out", help="output folder (default out/fidelity/<scene>-<design>-<WxH>)")
-    ap.add_argument("--jobs", type=int, default=0, help="frames at once (default: cores)")
+    ap.add_argument("res", nargs="?", default="128x128", type=arguments.resolution,
+                    help=f"frame size WxH, 1..{arguments.MAX_SIDE} each (default 128x128)")
+    ap.add_argument("--out", type=arguments.output_folder,
+                    help="output folder (default out/fidelity/<scene>-<design>-<WxH>)")
+    ap.add_argument("--jobs", type=arguments.positive_int,
+                    help="frames at once, 1 or more (default: the number of cores)")
+    ap.add_argument("--build", action="store_true",
+                    help="build strata-sim first (scripts/build), once the arguments are checked; "
+                         "scripts/fidelity passes it")
     a = ap.parse_args()
-    out = a.out or os.path.join(ROOT, "out", "fidelity", f"{a.scene.split(':')[0]}-{a.design}-{a.res}")
-    os.makedirs(out, exist_ok=True)
     try:
-        config = run_mod.resolve_config(a.design, ROOT, "design")
+        config = run_mod.resolve_config(a.design, ROOT, "argument design")
     except ValueError as e:
-        sys.exit(f"fidelity: {e}")
+        ap.error(str(e))
+    out = a.out or os.path.join(ROOT, "out", "fidelity", f"{a.scene.split(':')[0]}-{a.design}-{a.res}")
+    if not a.out:  # the default is made of the arguments: checked as --out would be
+        try:
+            arguments.output_folder(out)
+        except argparse.ArgumentTypeError as e:
+            ap.error(f"argument --out (default): {e}")
+    if a.build:
+        build()
+    os.makedirs(out, exist_ok=True)
     runs = [run_mod.with_digest({"config": config, "scene": a.scene, "res": a.res, "set": dict(sets)})
             for _, sets in MODES]
     # Every error is against the precise frame, so all frames must come from this build.

@@ -27,6 +27,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import arguments  # noqa: E402
 import sweep  # noqa: E402
 
 DESIGNS = {"trax": "trax", "streams": "strata-streams", "pipelines": "strata-pipelines"}
@@ -49,6 +50,10 @@ def from_spec(name, args):
     w, h = (int(x) for x in args.res.split("x"))
     w0, h0 = (int(x) for x in axes["res"][0].split("x"))
     axes["res"] = [f"{int(r.split('x')[0]) * w // w0}x{int(r.split('x')[1]) * h // h0}" for r in axes["res"]]
+    for r in axes["res"]:  # size-check also runs twice --res: that must be a frame strata-sim takes
+        if not all(arguments.side_ok(int(x)) for x in r.split("x")):
+            raise sweep.spec.SpecError(f"argument --res: '{args.res}': experiments/specs/{name}.json would also "
+                                       f"run {r}; width and height must be 1..{arguments.MAX_SIDE}")
     data["timing_mode"] = args.mode
     return [sweep.with_digest(p) for p in sweep.spec.Spec(path, data).runs()]
 
@@ -264,31 +269,47 @@ def write_tables(name, results, out):
     return len(rows)
 
 
+def plan(names, args, ap):
+    """{spec name: its frames} for the experiments `names`; what the specs cannot take from
+    --res or --scenes is an argument error (exit 2), before anything runs."""
+    try:
+        return {EXPERIMENTS[n][0]: from_spec(EXPERIMENTS[n][0], args) for n in names}
+    except sweep.spec.SpecError as e:
+        ap.error(str(e))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("experiment", nargs="?", help="one of the experiments, or 'all'")
-    ap.add_argument("--res", default="128x128", help="frame size WxH (default 128x128; the paper: 1024x1024)")
+    # The arguments are checked as they are parsed (experiments/arguments.py): a bad one is an
+    # argparse error naming it, before any frame runs or any folder is made.
+    ap.add_argument("--res", default="128x128", type=arguments.resolution,
+                    help=f"frame size WxH, 1..{arguments.MAX_SIDE} each (default 128x128; the paper: 1024x1024)")
     ap.add_argument("--mode", default="lt", choices=["lt", "precise", "sampled"], help="timing mode")
-    ap.add_argument("--scenes", default="sibenik,hairball,vegetation", help="comma-separated scene specs")
-    ap.add_argument("--jobs", type=int, default=os.cpu_count(), help="frames run at once (default: cores)")
-    ap.add_argument("--out", default=os.path.join(sweep.ROOT, "out", "experiments"), help="output folder")
+    ap.add_argument("--scenes", default="sibenik,hairball,vegetation", type=arguments.name_list,
+                    help="comma-separated scene specs, each once")
+    ap.add_argument("--jobs", type=arguments.positive_int, default=os.cpu_count(),
+                    help="frames run at once, 1 or more (default: the number of cores)")
+    ap.add_argument("--out", default=os.path.join(sweep.ROOT, "out", "experiments"), type=arguments.output_folder,
+                    help="output folder")
     ap.add_argument("--list", action="store_true", help="list the experiments and their frame counts")
     ap.add_argument("--collect", action="store_true",
                     help="run nothing: write the tables of the frames that finished (plots only when all did)")
     args = ap.parse_args()
-    args.scenes = [s for s in args.scenes.split(",") if s]
     if args.list or not args.experiment:
+        frames = plan(EXPERIMENTS, args, ap)
         for name, (spec, _) in EXPERIMENTS.items():
-            print(f"{name:22} {len(from_spec(spec, args)):3} frames  (experiments/specs/{spec}.json)")
+            print(f"{name:22} {len(frames[spec]):3} frames  (experiments/specs/{spec}.json)")
         return 0
     names = list(EXPERIMENTS) if args.experiment == "all" else [args.experiment]
     unknown = [n for n in names if n not in EXPERIMENTS]
     if unknown:
         ap.error(f"unknown experiment {unknown[0]!r}; --list shows them")
+    frames = plan(names, args, ap)
     if not os.access(sweep.SIM, os.X_OK):
         sys.exit(f"paper.py: {sweep.SIM} not found: build first (scripts/build)")
     os.makedirs(args.out, exist_ok=True)
-    plans = {n: (from_spec(EXPERIMENTS[n][0], args), EXPERIMENTS[n][1]) for n in names}
+    plans = {n: (frames[EXPERIMENTS[n][0]], EXPERIMENTS[n][1]) for n in names}
     # Every frame of every experiment in one sweep: shared frames run once, all cores stay busy.
     everything = [p for runs, _ in plans.values() for p in runs]
     results = sweep.collect(everything, args.out) if args.collect else \

@@ -140,6 +140,50 @@ class SpecTest(Fixture):
                     spec_mod.load(self.write_spec(axes={"scene": ["a"], "sram": bad})).runs()
                 self.assertIn(expected, str(e.exception))
 
+    def test_a_plot_name_must_be_a_plain_file_name(self):
+        # The PNG is <output>/<name>.png: a name with a folder in it would write elsewhere.
+        for name in ("../../x", "sub/x", "/tmp/x", ".", "..", "", 7, "a\0b"):
+            with self.subTest(name=name):
+                with self.assertRaises(spec_mod.SpecError) as e:
+                    spec_mod.load(self.write_spec(plots=[{"name": "ok", "x": "scene", "y": "frame.cycles"},
+                                                         {"name": name, "x": "scene", "y": "frame.cycles"}]))
+                self.assertIn("spec.json: plots[1].name", str(e.exception))
+        with self.assertRaises(spec_mod.SpecError) as e:
+            spec_mod.load(self.write_spec(plots=[{"x": "scene", "y": "frame.cycles"}]))
+        self.assertIn("plots[0].name", str(e.exception))
+        # Through the command: a spec error (exit 2) before anything runs or is written.
+        spec = self.write_spec(plots=[{"name": "../escaped", "x": "scene", "y": "frame.cycles"}])
+        self.assertEqual(self.sweep(spec), 2)
+        self.assertEqual(self.calls(), [])
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "escaped.png")))
+
+    def test_a_value_repeated_on_an_axis_is_refused(self):
+        # A repeated value makes the same run twice, which the runner does once: the sweep would
+        # silently have fewer runs than the spec seems to ask for.
+        cases = [({"design": ["trax"], "scene": ["a"], "seed": [1, 2, 1]}, "axes.seed: the value 1"),
+                 ({"design": ["trax"], "scene": ["a", "b", "a"]}, "axes.scene: the value \"a\""),
+                 ({"scene": ["a"], "sram": [{"design": "trax", "seed": 1}, {"seed": 1, "design": "trax"}]},
+                  "axes.sram: the value {\"design\": \"trax\", \"seed\": 1}")]
+        for axes, expected in cases:
+            with self.subTest(expected=expected):
+                with self.assertRaises(spec_mod.SpecError) as e:
+                    spec_mod.load(self.write_spec(axes=axes)).runs()
+                self.assertIn("spec.json: ", str(e.exception))
+                self.assertIn(expected, str(e.exception))
+                self.assertIn("appears twice", str(e.exception))
+        # Values equal to Python but not as parameters are different runs (1 and 1.0 are two keys).
+        self.assertEqual(len(spec_mod.load(self.write_spec(axes={"design": ["trax"], "scene": ["a"],
+                                                                 "x.y": [1, 1.0, True]})).runs()), 3)
+        # With zip, a value may repeat on an axis; a whole repeated combination may not.
+        zipped = {"design": ["trax", "trax"], "scene": ["a", "b"]}
+        self.assertEqual(len(spec_mod.load(self.write_spec(combine="zip", axes=zipped)).runs()), 2)
+        with self.assertRaises(spec_mod.SpecError) as e:
+            spec_mod.load(self.write_spec(combine="zip", axes={"design": ["trax", "trax"], "scene": ["a", "a"]}))
+        self.assertIn("axes: with combine 'zip', values 0 and 1", str(e.exception))
+        # Through the command: a spec error (exit 2), nothing run.
+        self.assertEqual(self.sweep(self.write_spec(axes={"design": ["trax"], "scene": ["a"], "seed": [1, 1]})), 2)
+        self.assertEqual(self.calls(), [])
+
 
 class LocalTest(Fixture):
     def test_runs_writes_results_with_units_and_resumes(self):

@@ -1,5 +1,5 @@
 """Plots from the spec's "plots" entries, each drawn from the finished rows as a PNG with matplotlib:
-    name     the PNG's name
+    name     the PNG's name: a plain file name, no folders (spec.check_plots refuses others)
     x        a column, or a list of columns: a row's x is the first of them it has (for cases
              that vary different parameters, e.g. TRaX's L2 size and STRaTA's stream size)
     y        a column, or a list of columns: one line per column and series

@@ -67,6 +67,7 @@ class Spec:
         if self.combine == "zip" and len({len(v) for _, v in self.axes}) != 1:
             raise SpecError(where("axes: with combine 'zip' every axis needs the same number of values (" +
                                   ", ".join(f"{n}: {len(v)}" for n, v in self.axes) + ")"))
+        check_no_repeats(self.axes, self.combine, where)
         names = [n for n, _ in self.axes]
         names += sorted({k for _, vs in self.axes for v in vs if isinstance(v, dict) for k in v})
         if "design" in names and "config" in names:
@@ -80,6 +81,7 @@ class Spec:
             raise SpecError(where("fixed: must be an object"))
         self.base_dir = base
         self.plots = data.get("plots", [])
+        check_plots(self.plots, where)
 
     def runs(self):
         """Every run's parameters, in spec order (duplicates kept; the runner runs them once)."""
@@ -114,6 +116,55 @@ class Spec:
             params[name] = value
         else:
             params["set"][name] = value
+
+
+def value_key(value):
+    """A value as a run's key sees it (run.run_key is JSON with sorted keys): equal keys are one
+    run, so 1 and 1.0 differ, and a case's keys may come in any order."""
+    return json.dumps(value, sort_keys=True)
+
+
+def check_no_repeats(axes, combine, where):
+    """A repeated value (with zip: a repeated combination) makes the same run twice, and the
+    runner does it once: the sweep would silently have fewer runs than its spec lists."""
+    if combine == "product":
+        for name, values in axes:
+            first = {}
+            for i, v in enumerate(values):
+                j = first.setdefault(value_key(v), i)
+                if j != i:
+                    raise SpecError(where(f"axes.{name}: the value {value_key(v)} appears twice (axes.{name}[{j}] "
+                                          f"and [{i}]): the same run twice is done once, so list it once"))
+    else:
+        names = [n for n, _ in axes]
+        first = {}
+        for i, combo in enumerate(zip(*(v for _, v in axes))):
+            j = first.setdefault(value_key(combo), i)
+            if j != i:
+                raise SpecError(where(f"axes: with combine 'zip', values {j} and {i} repeat one combination (" +
+                                      ", ".join(f"{n}={value_key(v)}" for n, v in zip(names, combo)) +
+                                      "): the same run twice is done once, so list it once"))
+
+
+def is_plain_file_name(name):
+    """True for a name with no folder in it (the plot is written as <output>/<name>.png)."""
+    return (isinstance(name, str) and name not in ("", ".", "..") and "\0" not in name
+            and os.path.basename(name) == name and not (os.altsep and os.altsep in name))
+
+
+def check_plots(plots, where):
+    if not isinstance(plots, list):
+        raise SpecError(where("plots: must be a list of plot objects"))
+    for i, entry in enumerate(plots):
+        if not isinstance(entry, dict):
+            raise SpecError(where(f"plots[{i}]: must be an object"))
+        if "name" not in entry:
+            raise SpecError(where(f"plots[{i}].name: required (the PNG's file name)"))
+        # Refused here, not when drawing: a name like "../../x" would write outside the output
+        # folder, and the runs would have been done before the plot is refused.
+        if not is_plain_file_name(entry["name"]):
+            raise SpecError(where(f"plots[{i}].name: {json.dumps(entry['name'])} is not a plain file name "
+                                  "(no folders, not empty, '.' or '..')"))
 
 
 def resolve_config(value, base_dir, where):
