@@ -1,6 +1,9 @@
-// The initiator side of a memory access in either timing mode. A thread (a TP, a test, a
-// benchmark) calls load/store/fetch/stream_* from its SC_THREAD; each call is blocking, as an
-// in-order TP waits for its access, and returns when and where the access completed.
+// A stand-alone initiator of memory accesses in either timing mode, for the memory benchmark
+// (model/memory/bench) and the memory system's timing tests. A thread calls
+// load/store/fetch/stream_* from its SC_THREAD; each call is blocking, as an in-order TP waits
+// for its access, and returns when and where the access completed. The chip's TMs do not use
+// it: their memory side, with the chip's timing rules, is ThreadMultiprocessor::transact and
+// sync_to (model/chip/thread_multiprocessor.cpp); issue 37 merges the two.
 //
 //   kLooselyTimed: the thread runs ahead of global time within a quantum; a request carries
 //                  its local offset as annotated delay and the answer advances the offset.
