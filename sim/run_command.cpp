@@ -22,6 +22,7 @@
 #include "sim/resolution.h"
 #include "sim/sanitizer_stack.h"
 #include "sim/scene_source.h"
+#include "sim/vcd_output.h"
 
 namespace strata::sim {
 namespace {
@@ -106,17 +107,21 @@ void run_frame(RunOptions o) {
   if (o.vcd_start > o.vcd_end)
     throw std::runtime_error("--vcd-start " + std::to_string(o.vcd_start) + " is after --vcd-end " +
                              std::to_string(o.vcd_end));
-  std::string vcd_base = o.vcd;  // SystemC adds the .vcd
+  // The RTL's VCDs are named after the chip's without its .vcd: t.vcd gives t.rtl_tm0.vcd.
+  std::string vcd_base = o.vcd;
   if (vcd_base.size() > 4 && vcd_base.substr(vcd_base.size() - 4) == ".vcd") vcd_base.resize(vcd_base.size() - 4);
+  // Declared before the chip, whose RTL backends write these files: they outlive it.
+  const auto rtl_vcds = std::make_shared<RtlVcdSet>();
   if (config.pipeline_impl == chip::PipelineImpl::kRtl)
-    inputs.pipeline_backend = rtl_pipeline_backend(config, {o.vcd.empty() ? "" : vcd_base, o.vcd_start, o.vcd_end});
+    inputs.pipeline_backend =
+        rtl_pipeline_backend(config, {o.vcd.empty() ? "" : vcd_base, o.vcd_start, o.vcd_end, rtl_vcds});
   chip::Chip chip("chip", config, inputs);
 
-  sc_core::sc_trace_file* vcd = nullptr;
+  std::unique_ptr<VcdOutput> vcd;  // written under exactly the name given (vcd_output.h)
   if (!o.vcd.empty()) {
-    vcd = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
-    vcd->set_time_unit(1, sc_core::SC_NS);
-    chip.trace(vcd, memory::TraceWindow(o.vcd_window_cycles, o.vcd_start, o.vcd_end));
+    vcd = std::make_unique<VcdOutput>(o.vcd);
+    vcd->trace_file()->set_time_unit(1, sc_core::SC_NS);
+    chip.trace(vcd->trace_file(), memory::TraceWindow(o.vcd_window_cycles, o.vcd_start, o.vcd_end));
   }
   ProgressMonitor progress("progress", chip, o.progress_cycles, !o.quiet && (o.progress || isatty(STDERR_FILENO) != 0),
                            isatty(STDERR_FILENO) != 0);
@@ -127,7 +132,7 @@ void run_frame(RunOptions o) {
   restore_main_stack_for_asan();  // ASan builds only: the outputs below may throw (a full disk, a signal)
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.disarm();
-  if (vcd) sc_core::sc_close_vcd_trace_file(vcd);
+  if (vcd) vcd->close();
   const bool interrupted = progress.interrupted() || progress.cycle_limit_reached();
   if (!chip.finished() && !interrupted) throw std::runtime_error("simulation failed: " + chip.error());
 
@@ -137,6 +142,9 @@ void run_frame(RunOptions o) {
   write_exr(dir / "image.exr", o.settings.width, o.settings.height, image);
   write_png_preview(dir / "image.png", o.settings.width, o.settings.height, image);
   write_file_atomically(dir / "stats.json", report.to_json(detail).dump(2) + "\n");
+  // The VCDs last: a full disk there still leaves the image and the statistics, and the error.
+  if (vcd) vcd->commit();
+  rtl_vcds->commit();
   std::printf("%s", report.summary().c_str());
   std::printf("wrote          %s/image.exr, image.png, stats.json%s%s\n", dir.c_str(),
               o.vcd.empty() ? "" : ", ", o.vcd.c_str());
@@ -144,7 +152,7 @@ void run_frame(RunOptions o) {
     std::printf("warning        --vcd-start %llu is at or after the frame's last cycle (%llu): the VCD holds the "
                 "signals but no sample\n",
                 static_cast<unsigned long long>(o.vcd_start), static_cast<unsigned long long>(chip.cycles()));
-  if (!o.vcd.empty() && config.pipeline_impl == chip::PipelineImpl::kRtl)
+  if (!rtl_vcds->empty())
     std::printf("wrote          the RTL pipelines' VCD: %s (one per TM using the RTL)\n",
                 (vcd_base + ".rtl_tm<k>.vcd").c_str());
 
@@ -187,7 +195,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--seed", opts->settings.seed, "random seed of the frame")->capture_default_str();
   cmd->add_option("--out", opts->out_dir, "output folder")->capture_default_str();
   cmd->add_option("--firmware", opts->firmware, "kernel ELF (default: the design's kernel)");
-  cmd->add_option("--vcd", opts->vcd, "write a VCD waveform to this file");
+  cmd->add_option("--vcd", opts->vcd,
+                  "write a VCD waveform to exactly this file (with tm.pipeline_impl=rtl also <FILE without "
+                  ".vcd>.rtl_tm<k>.vcd)");
   cmd->add_option("--vcd-window", opts->vcd_window_cycles, "VCD sampling window in cycles")->capture_default_str();
   cmd->add_option("--vcd-start", opts->vcd_start, "first cycle the VCD records");
   cmd->add_option("--vcd-end", opts->vcd_end, "cycle after which the VCD records nothing");

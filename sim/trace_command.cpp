@@ -35,6 +35,7 @@ void run_generate(const TraceOptions& o) {
     throw std::invalid_argument("--generate: at most " + std::to_string(kMaxGeneratedRays) + " rays, got " +
                                 std::to_string(o.generate));
   require_writable_file(o.out, "--out");
+  require_not_input(o.out, "--out", o.source.scene, "--scene");
   // Only the bounds are needed: no BVH build.
   const scenes::Scene scene = scenes::load_scene(o.source.scene, STRATA_SOURCE_DIR);
   for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
@@ -47,6 +48,9 @@ void run_generate(const TraceOptions& o) {
 }
 
 void run_trace(const TraceOptions& o) {
+  // Before anything is read: the hits must not replace the rays (or the scene) they come from.
+  require_not_input(o.out, "--out", o.rays_in, "--rays");
+  require_not_input(o.out, "--out", o.source.scene, "--scene");
   // The ray file first: a bad file should fail before a long scene build.
   const std::vector<RayRecord> rays = read_ray_file(o.rays_in);
   require_writable_file(o.out, "--out");

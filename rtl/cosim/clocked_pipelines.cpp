@@ -1,7 +1,10 @@
 // The verilated pipelines clocked by hand: see clocked_pipelines.h.
 #include "rtl/cosim/clocked_pipelines.h"
 
+#include <cerrno>
+#include <fcntl.h>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "Vbox_pipeline_cc.h"
 #include "Vtriangle_pipeline_cc.h"
@@ -20,6 +23,38 @@ uint64_t on_lane(float f, int lane) { return static_cast<uint64_t>(bits(f)) << (
 // The longest latency is 33 cycles; a pipeline silent for this long never answers.
 constexpr uint64_t kMaxCyclesPerOperation = 1000;
 
+// Verilator's VCD file with every write checked: the first error is kept and reported by
+// close_vcd(), and writes are then dropped but reported done, since Verilator would abort the
+// whole process on a failed one. fsync at the close: a full disk may show only there.
+class CheckedVcdFile : public VerilatedVcdFile {
+ public:
+  bool open(const std::string& name) override {
+    fd_ = ::open(name.c_str(), O_CREAT | O_WRONLY | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd_ < 0) error_ = errno;
+    return fd_ >= 0;
+  }
+  ssize_t write(const char* data, ssize_t bytes) override {
+    for (ssize_t done = 0; done < bytes && error_ == 0;) {
+      const ssize_t n = ::write(fd_, data + done, static_cast<size_t>(bytes - done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) error_ = n < 0 ? errno : EIO;
+      else done += n;
+    }
+    return bytes;
+  }
+  void close() override {
+    if (fd_ < 0) return;
+    if (error_ == 0 && ::fsync(fd_) != 0 && errno != EINVAL) error_ = errno;
+    if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+    fd_ = -1;
+  }
+  int error() const { return error_; }
+
+ private:
+  int fd_ = -1;
+  int error_ = 0;
+};
+
 }  // namespace
 
 struct ClockedPipelines::Models {
@@ -27,6 +62,8 @@ struct ClockedPipelines::Models {
   VerilatedContext context;
   std::unique_ptr<Vbox_pipeline_cc> box;
   std::unique_ptr<Vtriangle_pipeline_cc> triangle;
+  // The file outlives the VerilatedVcdC that writes to it (declared before it).
+  std::unique_ptr<CheckedVcdFile> vcd_file;
   std::unique_ptr<VerilatedVcdC> vcd;
 };
 
@@ -61,11 +98,19 @@ ClockedPipelines::~ClockedPipelines() {
 }
 
 void ClockedPipelines::open_vcd(const std::string& path) {
-  m_->vcd = std::make_unique<VerilatedVcdC>();
+  m_->vcd_file = std::make_unique<CheckedVcdFile>();
+  m_->vcd = std::make_unique<VerilatedVcdC>(m_->vcd_file.get());
   m_->box->trace(m_->vcd.get(), 99);
   m_->triangle->trace(m_->vcd.get(), 99);
   m_->vcd->open(path.c_str());
   if (!m_->vcd->isOpen()) throw std::runtime_error(path + ": cannot write the RTL pipelines' VCD");
+}
+
+int ClockedPipelines::close_vcd() {
+  if (m_->vcd) m_->vcd->close();
+  m_->vcd.reset();  // no dump after this (trace_from sees no VCD)
+  tracing_ = false;
+  return m_->vcd_file ? m_->vcd_file->error() : 0;
 }
 
 void ClockedPipelines::trace_from(uint64_t time_ps) {

@@ -46,8 +46,12 @@ class ClockedPipelines {
   // written. While tracing is on, each half cycle the pipelines are clocked is dumped at the
   // next trace time (1 ps units): trace_from(t) moves it to t unless the dumps already got
   // past t, so the trace's times only increase. trace_off() stops the dumps (the pipelines
-  // still run). The file is closed with the object.
+  // still run). The file is closed by close_vcd() or with the object.
   void open_vcd(const std::string& path);
+  // Closes the VCD (flushing what Verilator buffered) and returns the errno of its first failed
+  // write, 0 if every byte was written. Verilator would abort the process on a failed write
+  // (a full disk); the file records it instead, so the caller can refuse the file cleanly.
+  int close_vcd();
   void trace_from(uint64_t time_ps);
   void trace_off() { tracing_ = false; }
 

@@ -51,6 +51,9 @@ class RtlFusedBackend : public sc_core::sc_module, public iss::FusedPipelineBack
   iss::TriangleTestResult triangle_test(const strata_pipe_ray& ray, const strata_pipe_triangle& tri,
                                         const TrianglePartial& previous) override;
   iss::FusedBackendCounts counts() const override;
+  // Closes the VCD (if any); the errno of its first failed write, 0 if none
+  // (ClockedPipelines::close_vcd). The caller decides what a failure means for the file.
+  int close_vcd() { return transactor_.pipelines().close_vcd(); }
 
  private:
   // One transaction; fatal if the transactor refuses it (a programming error, not an input's).

@@ -38,7 +38,7 @@ class ZeroTimeTransactor : public sc_core::sc_module {
   // Rising edges of each pipeline's clock so far (reset included).
   uint64_t box_cycle() const { return pipelines_.box_cycle(); }
   uint64_t triangle_cycle() const { return pipelines_.triangle_cycle(); }
-  // The pipelines' VCD (ClockedPipelines::open_vcd, trace_from, trace_off).
+  // The pipelines' VCD (ClockedPipelines::open_vcd, close_vcd, trace_from, trace_off).
   ClockedPipelines& pipelines() { return pipelines_; }
 
  private:

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test/support/run_program.h"
 #include "test/support/test_files.h"
 
 namespace {
@@ -161,6 +162,29 @@ TEST(RtlChipRunVcd, TracesTheRtlSignalsOfTheWindowWithIncreasingTimes) {
     EXPECT_GE(times.front(), start * 1000);
     EXPECT_LT(times.back(), (end + 1) * 1000);
     for (size_t i = 1; i < times.size(); ++i) ASSERT_LT(times[i - 1], times[i]) << file << ": dump " << i;
+  }
+}
+
+// Issue 39 F10/F11 for the RTL's VCDs: a failed write (a full disk; here RLIMIT_FSIZE) made
+// Verilator abort the whole run, leaving the file cut off under its final name. Now the run ends
+// with an error naming the file, and neither the file nor a temporary is left.
+TEST(RtlChipRunVcd, AFullDiskIsAnErrorAndLeavesNoCutOffRtlVcd) {
+  TempDir dir;
+  // 1,000 chip cycles of RTL signals are 1.3-1.6 MB per TM; the images, stats.json and the
+  // chip's VCD of the same window fit in 512 KB.
+  const strata::sim::testing::ProgramResult r = strata::sim::testing::run_program(
+      {STRATA_SIM_EXE, "run", "--config", std::string(STRATA_SOURCE_DIR) + "/sim/configs/strata-pipelines.json",
+       "--set", "tms=2", "--scene", "cornell", "--res", "16x16", "--quiet", "--no-cache", "--set",
+       "tm.pipeline_impl=rtl", "--vcd", (dir / "t.vcd").string(), "--vcd-start", "100000", "--vcd-end", "101000",
+       "--out", (dir / "run").string()},
+      512 * 1024);
+  EXPECT_EQ(r.signal, 0) << r.output;  // not an abort
+  EXPECT_NE(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find(".rtl_tm0.vcd: cannot write RTL VCD: File too large"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("wrote "), std::string::npos) << r.output;
+  for (const auto& e : fs::directory_iterator(dir.path())) {
+    EXPECT_EQ(e.path().filename().string().find(".rtl_tm"), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
   }
 }
 
