@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -23,11 +25,34 @@ std::filesystem::path temporary_for(const std::filesystem::path& file) {
   return tmp;
 }
 
+// SIGINT and SIGTERM held back while a temporary exists: the run's handlers are gone once the
+// simulation has stopped, so a second Ctrl-C while the outputs were written killed the process
+// between open and rename and left "<file>.tmp.<pid>" behind (issue 39). A signal that arrives
+// meanwhile is delivered when the guard ends, with the file complete under its final name or
+// the temporary removed. (strata-sim writes its outputs from its one thread.)
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t held;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  }
+  ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+};
+
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& file, const void* data, std::size_t bytes,
                            const std::string& kind) {
   const std::filesystem::path tmp = temporary_for(file);
+  const SignalsHeld held;
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw write_error(file, kind, errno);
   const char* p = static_cast<const char*>(data);
