@@ -370,8 +370,7 @@ void load_gltf(Scene& scene, const fs::path& file) {
   if (ext != ".gltf" && ext != ".glb") {
     throw SceneError(source + ": unsupported extension '" + ext + "' (expected .gltf or .glb)");
   }
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw SceneError(source + ": file not found");
+  require_regular_file(file);
 
   gltf_preflight(file, ext == ".glb");
   tinygltf::TinyGLTF loader;

@@ -41,11 +41,18 @@ class MtlReader : public tinyobj::MaterialReader {
       missing.push_back(path.string());
       return false;
     }
+    try {
+      check_mtl_lines(in, path.string());
+    } catch (const SceneError& e) {  // thrown by load_obj once tinyobjloader has returned
+      if (error.empty()) error = e.what();
+      return false;
+    }
     tinyobj::LoadMtl(name_to_id, materials, &in, warn, err);
     return true;
   }
 
   std::vector<std::string> missing;
+  std::string error;  // the first .mtl refused, if any
 
  private:
   fs::path dir_;
@@ -119,8 +126,7 @@ void surface_warnings(Scene& scene, const std::string& source, const std::string
 
 void load_obj(Scene& scene, const fs::path& file) {
   const std::string source = file.string();
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw SceneError(source + ": file not found");
+  require_regular_file(file);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError(source + ": cannot open file");
   const bool truncated_tail = ends_without_newline(in);
@@ -135,6 +141,7 @@ void load_obj(Scene& scene, const fs::path& file) {
   const bool ok = tinyobj::LoadObj(&attrib, &shapes, &obj_materials, &warn, &err, &in, &mtl_reader,
                                    /*triangulate=*/true,
                                    /*default_vcols_fallback=*/false);
+  if (!mtl_reader.error.empty()) throw SceneError(mtl_reader.error);
   if (!ok || !err.empty()) {
     while (!err.empty() && (err.back() == '\n' || err.back() == '.')) err.pop_back();
     throw SceneError(source + ": parse error: " + (err.empty() ? "unknown" : err));

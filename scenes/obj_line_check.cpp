@@ -134,4 +134,35 @@ void check_obj_lines(std::istream& in, const std::string& source) {
   in.seekg(0, std::ios::beg);
 }
 
+void check_mtl_lines(std::istream& in, const std::string& source) {
+  // The fields tinyobjloader reads as numbers (colours, exponents, PBR factors).
+  static const char* const kNumeric[] = {"Ka", "Kd", "Ks", "Kt", "Ke", "Tf", "Ni", "Ns", "d",     "Tr",
+                                         "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor", "illum"};
+  std::string text, material;
+  size_t line_no = 0;
+  while (std::getline(in, text)) {
+    ++line_no;
+    std::istringstream words(text);
+    std::string key;
+    if (!(words >> key)) continue;
+    if (key == "newmtl") {
+      std::getline(words >> std::ws, material);
+      continue;
+    }
+    bool numeric = false;
+    for (const char* k : kNumeric) numeric = numeric || key == k;
+    if (!numeric) continue;
+    for (std::string w; words >> w;) {
+      char* end = nullptr;
+      (void)std::strtod(w.c_str(), &end);
+      const bool a_number = !w.empty() && end == w.c_str() + w.size();
+      if (a_number && !finite_number(w))
+        throw SceneError(source + ":" + std::to_string(line_no) + ": material '" + material + "': " + key +
+                         " value '" + w + "' is not a finite number");
+    }
+  }
+  in.clear();
+  in.seekg(0, std::ios::beg);
+}
+
 }  // namespace strata::scenes

@@ -15,4 +15,11 @@ namespace strata::scenes {
 // covers the wrong area for a concave one: refused rather than rendered wrong).
 void check_obj_lines(std::istream& in, const std::string& source);
 
+// The same for a .mtl: tinyobjloader reads `Kd nan` as it comes, and the loader's clamp made it
+// a silent black (issue 39). Reads `in` to the end and rewinds it; throws SceneError
+// "<source>:<line>: material '<name>': <field> value '<v>' is not a finite number" for a
+// numeric field's value that is a number but NaN or beyond float (a word, as in
+// `Kd spectral file.rfl`, is left to tinyobjloader).
+void check_mtl_lines(std::istream& in, const std::string& source);
+
 }  // namespace strata::scenes

@@ -3,6 +3,7 @@
 #include "scenes/load_gltf.h"
 #include "scenes/load_obj.h"
 #include "scenes/validate.h"
+#include "json_input/strict_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -118,14 +119,13 @@ class DescriptionReader {
 
 json parse_file(const fs::path& file) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw SceneError(name + ": file not found");
+  require_regular_file(file);
   std::ifstream in(file);
   if (!in) throw SceneError(name + ": cannot open file");
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
-    throw SceneError(name + ": malformed JSON: " + e.what());
+  try {  // as a config file: no duplicate key, bounded nesting, syntax errors placed
+    return json_input::parse_strict(in, name);
+  } catch (const json_input::JsonInputError& e) {
+    throw SceneError(e.what());
   }
 }
 

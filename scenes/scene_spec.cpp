@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -51,7 +52,7 @@ ProceduralParams parse_procedural_options(const std::string& spec, const std::st
 
 }  // namespace
 
-void frame_bounds(Scene& scene) {
+void frame_bounds(Scene& scene, const std::string& source) {
   const Bounds b = scene.bounds();
   const glm::vec3 c = b.center();
   const float radius = std::max(0.5f * glm::length(b.extent()), 1e-6f);
@@ -62,6 +63,21 @@ void frame_bounds(Scene& scene) {
   scene.light.position = c + glm::vec3(0.0f, radius * 1.5f, radius * 1.5f);
   const float power = 4.0f * radius * radius;  // about unit irradiance at the scene's scale
   scene.light.intensity = {power, power, power};
+  // Finite coordinates near float's limit (1e38) put the camera or the light's power beyond it.
+  // Said here, naming the file and its bounds: the scene image's own check could only say
+  // "camera_eye is not finite", which points at a camera the user never gave (issue 39).
+  const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  if (!finite(scene.camera.eye) || !finite(scene.light.position) || !finite(scene.light.intensity) ||
+      !std::isfinite(radius)) {
+    const auto text = [](const glm::vec3& v) {
+      char s[96];
+      std::snprintf(s, sizeof s, "(%g, %g, %g)", double(v.x), double(v.y), double(v.z));
+      return std::string(s);
+    };
+    throw SceneError(source + ": scene bounds are too large for the camera: " + text(b.min) + " to " +
+                     text(b.max) + " puts the camera or the light beyond float range (about 3.4e38); "
+                     "scale the model down, or give a camera and light in a scene description (.json)");
+  }
 }
 
 Scene load_scene(const std::string& spec, const std::filesystem::path& source_dir) {
@@ -84,7 +100,7 @@ Scene load_scene(const std::string& spec, const std::filesystem::path& source_di
     scene.name = spec;
     if (ext == ".obj") load_obj(scene, path); else load_gltf(scene, path);
     require_triangles(scene, spec);
-    frame_bounds(scene);
+    frame_bounds(scene, spec);
     return scene;
   }
   if (!std::filesystem::exists(path))

@@ -15,7 +15,8 @@ namespace strata::scenes {
 // `source_dir` is the repository root, where scenes/data/ lives.
 Scene load_scene(const std::string& spec, const std::filesystem::path& source_dir);
 
-// A camera and light that show a whole bounding box (used for bare geometry files).
-void frame_bounds(Scene& scene);
+// A camera and light that show a whole bounding box (used for bare geometry files). Throws
+// SceneError naming `source` when the bounds are too large for them to be finite.
+void frame_bounds(Scene& scene, const std::string& source);
 
 }  // namespace strata::scenes

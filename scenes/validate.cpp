@@ -83,4 +83,12 @@ void require_triangles(const Scene& scene, const std::string& source) {
   }
 }
 
+void require_regular_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(file, ec);  // follows symlinks
+  if (!std::filesystem::exists(st)) throw SceneError(file.string() + ": file not found");
+  if (!std::filesystem::is_regular_file(st))
+    throw SceneError(file.string() + ": not a regular file (a folder, FIFO or device cannot be read as a scene file)");
+}
+
 }  // namespace strata::scenes

@@ -14,6 +14,7 @@
 #include "scenes/scene.h"
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 
 namespace strata::scenes {
@@ -28,6 +29,11 @@ void validate_triangles(Scene& scene, size_t first, const std::string& source);
 // leaves the caller's scene untouched. This validates all of part's triangles, then
 // appends its triangles (material indices shifted), materials, warnings and drop count.
 void append_validated(Scene& scene, Scene&& part, const std::string& source);
+
+// Before opening an input file: throws SceneError "<file>: file not found", or "<file>: not a
+// regular file" for a folder, FIFO or device (opening a FIFO would block; issue 39 reported
+// both as "file not found", which sent the user looking for a file that was there).
+void require_regular_file(const std::filesystem::path& file);
 
 // Throws SceneError("<source>: scene has no triangles") when there is nothing to render.
 void require_triangles(const Scene& scene, const std::string& source);

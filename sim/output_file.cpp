@@ -1,6 +1,8 @@
 #include "sim/output_file.h"
 
 #include <cerrno>
+#include <csignal>
+#include <pthread.h>
 #include <cstring>
 #include <fcntl.h>
 #include <stdexcept>
@@ -35,6 +37,29 @@ fs::file_type type_of(const fs::path& target) {
 }
 
 bool replaceable(fs::file_type t) { return t == fs::file_type::not_found || t == fs::file_type::regular; }
+
+// SIGINT and SIGTERM held back while write_file_atomically's temporary exists: the run's
+// handlers are gone once the simulation has stopped, so a second Ctrl-C while the outputs were
+// written killed the process between open and rename and left "<file>.tmp.<pid>" behind
+// (issue 39). A signal that arrives meanwhile is delivered when the guard ends, with the file
+// complete under its final name or the temporary removed. (strata-sim writes its outputs from
+// its one thread; the VCD's copier thread blocks every signal.)
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t held;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  }
+  ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+};
 
 }  // namespace
 
@@ -113,6 +138,7 @@ void PendingFile::commit(int error) {
 }
 
 void write_file_atomically(const fs::path& file, const void* data, std::size_t bytes, const std::string& kind) {
+  const SignalsHeld held;  // first: released after the temporary is renamed or removed
   PendingFile out(file, kind);
   CheckedFile f;
   if (f.open(out.temporary())) f.write(data, bytes);

@@ -2,7 +2,9 @@
 // own folder, every write and the final close checked, flushed to the device, and only then
 // renamed onto its final name; any failure (a full disk, a read-only folder) removes the
 // temporary and throws an error naming the file. A run never reports success for output it
-// did not write, and never leaves a cut-off file under a final name.
+// did not write, and never leaves a cut-off file under a final name. SIGINT and SIGTERM are held
+// while write_file_atomically's temporary exists, so a Ctrl-C during the write takes effect
+// after it, leaving no temporary either.
 //
 // The final name is never replaced by something of another kind: a symbolic link is written
 // through (the file it leads to is replaced, atomically, and the link stays), and a target that

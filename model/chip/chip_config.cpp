@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "firmware/abi/frame_abi.h"
+#include "json_input/strict_json.h"
 
 #include <fstream>
 #include <string>
@@ -233,7 +234,10 @@ void ChipConfig::finalize() {
   require(tms >= 1, "tms: the chip needs at least 1 TM, got " + std::to_string(tms));
   require(tms <= 1024, "tms: at most 1024 TMs are supported, got " + std::to_string(tms));
   require(tps_per_tm >= 1 && tps_per_tm <= 64, "tps_per_tm: must be 1..64, got " + std::to_string(tps_per_tm));
-  require(clock_ghz > 0.0 && clock_ghz <= 100.0, "clock_ghz: must be in (0, 100]");
+  require(clock_ghz >= kMinClockGhz && clock_ghz <= kMaxClockGhz,
+          "clock_ghz: must be in [" + real(kMinClockGhz) + ", " + real(kMaxClockGhz) +
+              "] GHz (SystemC's 64-bit picosecond time holds 1.8e13 cycles at the slowest), got " +
+              real(clock_ghz));
   require(tp_stack_bytes >= 256 && tp_stack_bytes % 16 == 0,
           "tp_stack_bytes: must be a multiple of 16 and at least 256, got " + std::to_string(tp_stack_bytes));
   // A global register access waits this long: 2^32-1 would stall every TP for ever.
@@ -320,8 +324,12 @@ ChipConfig load_chip_config(const std::filesystem::path& file, const std::vector
       throw ConfigError(file.string() + ": cannot open config file: not a regular file");
     std::ifstream in(file);
     if (!in) throw ConfigError(file.string() + ": cannot open config file");
-    nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
-    if (doc.is_discarded()) throw ConfigError(file.string() + ": not valid JSON");
+    nlohmann::json doc;
+    try {  // no duplicate key, at most json_input::kMaxDepth levels; errors say where
+      doc = json_input::parse_strict(in, file.string());
+    } catch (const json_input::JsonInputError& e) {
+      throw ConfigError(e.what());
+    }
     binder.apply(doc, file.string());
   }
   for (const std::string& o : overrides) binder.apply_override(o);

@@ -122,6 +122,13 @@ struct EnergyConfig {
 struct ChipConfig {
   DesignConfig design;
   double clock_ghz = 1.0;
+  // The slowest clock the model supports. SystemC time is a 64-bit count of picoseconds (the
+  // default resolution), and a cycle lasts 1000 / clock_ghz of them, so time can hold
+  // 2^64 * clock_ghz / 1000 cycles. At 0.001 GHz that is 1.8e13 cycles (5 hours of chip time at
+  // 1 GHz, thousands of times any frame we run); at 1e-12 GHz it was 18,446, and the frame's
+  // time wrapped (59,650 calendar overflows, issue 39). The fastest, 100 GHz, is 10 ps a cycle.
+  static constexpr double kMinClockGhz = 0.001;
+  static constexpr double kMaxClockGhz = 100.0;
   // The chip's cycle as SystemC time: the one conversion the TMs, every memory module, the
   // window sampler and the progress monitor share, so a cycle is the same cycle everywhere and
   // the frame's cycle counts do not depend on clock_ghz (only its seconds do).

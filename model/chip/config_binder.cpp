@@ -1,5 +1,7 @@
 #include "model/chip/config_binder.h"
 
+#include "json_input/strict_json.h"
+
 #include <cmath>
 #include <limits>
 
@@ -134,8 +136,16 @@ void ConfigBinder::apply_override(const std::string& assignment) {
   if (eq == std::string::npos || eq == 0)
     throw ConfigError("--set " + assignment + ": expected key=value");
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
-  if (value.is_discarded()) {
+  nlohmann::json value;
+  bool is_json = true;
+  try {  // as a config file: a value nested too deep or with a repeated key is refused
+    value = json_input::parse_strict(text, "--set " + path);
+  } catch (const json_input::JsonSyntaxError&) {
+    is_json = false;
+  } catch (const json_input::JsonInputError& e) {
+    throw ConfigError(e.what());
+  }
+  if (!is_json) {
     // A bare word is a string. JSON holds only UTF-8, and the config is echoed as JSON (stats.json):
     // other bytes would make that echo throw (a fuzz-found crash: the error message's own dump).
     try {

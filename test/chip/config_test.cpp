@@ -2,6 +2,7 @@
 // unknown keys, wrong types and impossible values are errors that name the field.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -128,6 +129,9 @@ TEST(ChipConfig, OutOfRangeValuesAreRefusedNamingTheField) {
       // Issue 39 F12: a tiny value is printed as given, not as "0.000000" (0 is allowed).
       {trax, "timing.sample_target_error=1e-12", "relative half-width in [0.001, 0.5], got 1e-12"},
       {trax, "energy.fp_add_nj=-1e-09", "fp_add_nj: energies must be 0..1e6 nJ per operation, got -1e-09"},
+      // Issue 39: a clock so slow that SystemC's picosecond time wrapped within the frame.
+      {trax, "clock_ghz=1e-12", "clock_ghz: must be in [0.001, 100] GHz"},
+      {trax, "clock_ghz=0.000999", "got 0.000999"},
   };
   for (const auto& c : cases) {
     const std::string e = error_of(c.file, {"timing.mode=sampled", c.set});
@@ -165,6 +169,68 @@ TEST(ChipConfig, BadFilesAreNamed) {
   EXPECT_NE(error_of((dir / "no-such-config.json").string(), {}).find("cannot open"), std::string::npos);
   std::filesystem::remove(bad_json);
   std::filesystem::remove(typo);
+}
+
+// Issue 39 F6: 100,000 levels of nesting crashed with SIGSEGV (the binder's recursion, the error
+// message's dump), and deep objects took 30 s first (a path string per level). The parse stops
+// at the limit, naming the file and the limit, at once.
+TEST(ChipConfig, NestingBeyondTheLimitIsRefusedNamingTheFileAtOnce) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string arrays = (dir / "strata-deep-arrays.json").string();
+  const std::string objects = (dir / "strata-deep-objects.json").string();
+  const int depth = 100000;
+  std::ofstream(arrays) << "{\"tms\": " << std::string(depth, '[') << std::string(depth, ']') << "}";
+  {
+    std::ofstream out(objects);
+    for (int i = 0; i < depth; ++i) out << "{\"a\": ";
+    out << "1" << std::string(depth, '}');
+  }
+  for (const std::string& file : {arrays, objects}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string e = error_of(file, {});
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_NE(e.find(file + ": nested deeper than 64 levels"), std::string::npos) << e;
+    EXPECT_LT(seconds, 5.0) << file;  // milliseconds: it reads no further than level 65
+  }
+  // At the limit a document still parses (and is then checked as usual: here, an unknown key).
+  const std::string at_limit = (dir / "strata-deep-64.json").string();
+  {
+    std::ofstream out(at_limit);
+    for (int i = 0; i < 64; ++i) out << "{\"a\": ";
+    out << "1" << std::string(64, '}');
+  }
+  EXPECT_NE(error_of(at_limit, {}).find("unknown key 'a.a.a"), std::string::npos) << error_of(at_limit, {});
+  // A --set value too: it was dumped, recursively, into the type error.
+  const std::string set = "tms=" + std::string(60000, '[') + std::string(60000, ']');
+  EXPECT_NE(error_of(config_dir() + "trax.json", {set}).find("--set tms: nested deeper than 64 levels"),
+            std::string::npos);
+  for (const std::string& f : {arrays, objects, at_limit}) std::filesystem::remove(f);
+}
+
+// Issue 39: a repeated key was accepted, the last one winning; now it is refused, naming the
+// key by its path and the file.
+TEST(ChipConfig, ADuplicateKeyIsRefusedNamingKeyAndFile) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string file = (dir / "strata-duplicate-key.json").string();
+  std::ofstream(file) << R"({"tms": 4, "memory": {"l2": {"banks": 8, "size_bytes": 1048576, "banks": 16}}})";
+  const std::string e = error_of(file, {});
+  EXPECT_NE(e.find(file + ": duplicate key 'memory.l2.banks'"), std::string::npos) << e;
+  std::ofstream(file) << R"({"tms": 4, "tms": 4})";
+  EXPECT_NE(error_of(file, {}).find("duplicate key 'tms'"), std::string::npos) << error_of(file, {});
+  // The same key in two different objects is no repetition.
+  std::ofstream(file) << R"({"tm": {"xu": {"fp_mul": {"count": 8}, "fp_add": {"count": 8}}}})";
+  EXPECT_EQ(error_of(file, {}), "");
+  std::filesystem::remove(file);
+}
+
+// Issue 39: a syntax error said only "not valid JSON"; now it says where.
+TEST(ChipConfig, ASyntaxErrorGivesFileLineAndColumn) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string file = (dir / "strata-syntax-error.json").string();
+  std::ofstream(file) << "{\n  \"tms\": 4,\n  \"tps_per_tm\": 4,,\n}\n";
+  const std::string e = error_of(file, {});
+  EXPECT_NE(e.find(file + ": not valid JSON at line 3, column 19"), std::string::npos) << e;
+  std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "test/support/run_program.h"
@@ -92,6 +93,31 @@ TEST(InputFaults, SampledOnlyOptionsInAnotherModeAreWarnedAbout) {
   r = run("sampled", "timing.sample_target_error=0.5");
   EXPECT_EQ(r.exit_status, 0) << r.output;
   EXPECT_EQ(r.output.find("sampled timing's options do nothing"), std::string::npos) << r.output;
+}
+
+// Issue 39 F6: a config nested 100,000 levels deep crashed strata-sim with SIGSEGV (arrays at
+// once, objects after 30 s). Now it exits 1 at once with an error naming the file and the limit.
+TEST(InputFaults, AConfigNested100000LevelsDeepIsAnErrorNotACrash) {
+  TempDir dir;
+  const int depth = 100000;
+  std::string objects;
+  for (int i = 0; i < depth; ++i) objects += "{\"a\": ";
+  objects += "1" + std::string(depth, '}');
+  const struct {
+    const char* name;
+    std::string text;
+  } cases[] = {{"arrays.json", "{\"tms\": " + std::string(depth, '[') + std::string(depth, ']') + "}"},
+               {"objects.json", objects}};
+  for (const auto& c : cases) {
+    const auto file = dir / c.name;
+    std::ofstream(file) << c.text;
+    const ProgramResult r = run_program({kSim, "run", "--config", file.string(), "--scene", "cornell:size=0.2",
+                                         "--res", "8x8", "--no-cache", "--quiet", "--out", (dir / "o").string()},
+                                        0, 10);
+    EXPECT_EQ(r.signal, 0) << c.name << ": killed by signal " << r.signal << " (SIGALRM: took over 10 s)";
+    EXPECT_EQ(r.exit_status, 1) << r.output;
+    EXPECT_NE(r.output.find(file.string() + ": nested deeper than 64 levels"), std::string::npos) << r.output;
+  }
 }
 
 }  // namespace

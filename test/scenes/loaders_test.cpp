@@ -1,7 +1,10 @@
 // OBJ loader tests. Fixtures are written into a fresh temporary directory per test.
 #include "scenes/load_obj.h"
+#include "scenes/scene_spec.h"
 #include "scenes/validate.h"
 #include "loader_fixtures.h"
+
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -253,6 +256,63 @@ TEST(LoaderObj, MissingFileThrows) {
   TempDir dir;
   Scene s;
   expect_scene_error([&] { load_obj(s, dir / "nope.obj"); }, {"nope.obj", "not found"});
+}
+
+// Issue 39: a FIFO or a folder given as geometry was reported as "file not found".
+TEST(LoaderObj, AFifoOrAFolderIsNotARegularFileRatherThanMissing) {
+  TempDir dir;
+  ASSERT_EQ(mkfifo((dir / "pipe.obj").c_str(), 0644), 0);
+  fs::create_directory(dir / "folder.obj");
+  for (const char* name : {"pipe.obj", "folder.obj"}) {
+    Scene s;
+    expect_scene_error([&] { load_obj(s, dir / name); },
+                       {(dir / name).string() + ": not a regular file"});
+  }
+  // The same through a scene description and a bare spec, and for glTF.
+  write_text(dir / "scene.json", R"({"geometry": ["folder.obj"]})");
+  expect_scene_error([&] { load_scene((dir / "scene.json").string(), dir.path()); },
+                     {(dir / "folder.obj").string() + ": not a regular file"});
+  expect_scene_error([&] { load_scene((dir / "pipe.obj").string(), dir.path()); }, {"pipe.obj: not a regular file"});
+  ASSERT_EQ(mkfifo((dir / "pipe.gltf").c_str(), 0644), 0);
+  expect_scene_error([&] { load_scene((dir / "pipe.gltf").string(), dir.path()); }, {"pipe.gltf: not a regular file"});
+}
+
+// Issue 39: finite coordinates of 1e38 made the framing camera infinite, reported as
+// "camera_eye is not finite" by the scene image, naming neither the file nor the cause.
+TEST(LoaderObj, BoundsTooLargeForTheCameraNameTheFileAndTheBounds) {
+  TempDir dir;
+  const auto file = write_text(dir / "huge.obj", "v -1e38 0 0\nv 1e38 0 0\nv 0 1e38 0\nf 1 2 3\n");
+  expect_scene_error([&] { load_scene(file.string(), dir.path()); },
+                     {file.string() + ": scene bounds are too large for the camera", "1e+38"});
+  // Large but representable bounds still frame.
+  const auto big = write_text(dir / "big.obj", "v -1e15 0 0\nv 1e15 0 0\nv 0 1e15 0\nf 1 2 3\n");
+  EXPECT_EQ(load_scene(big.string(), dir.path()).triangles.size(), 1u);
+}
+
+// Issue 39: `Kd nan` gave a black material without a word; a non-finite material value is an
+// error naming the .mtl, the line, the material and the field, as a NaN vertex is.
+TEST(LoaderObj, ANonFiniteMtlValueIsAnErrorNamingFileLineAndField) {
+  TempDir dir;
+  const struct {
+    const char* line;
+    const char* why;
+  } cases[] = {{"Kd nan 0.5 0.5", "material 'red': Kd value 'nan' is not a finite number"},
+               {"Kd 0.5 inf 0.5", "Kd value 'inf'"},
+               {"Ks 1e39 0 0", "Ks value '1e39'"},
+               {"Ns -nan", "Ns value '-nan'"},
+               {"d NaN", "d value 'NaN'"}};
+  for (const auto& c : cases) {
+    write_text(dir / "m.mtl", std::string("# colours\nnewmtl red\n") + c.line + "\n");
+    const auto file = write_text(dir / "m.obj", std::string("mtllib m.mtl\n") + kQuad + "usemtl red\nf 1 2 3\n");
+    Scene s;
+    expect_scene_error([&] { load_obj(s, file); }, {(dir / "m.mtl").string() + ":3: ", c.why});
+    EXPECT_TRUE(s.triangles.empty()) << c.line;
+  }
+  // Words where numbers may stand (a spectral curve) are left to tinyobjloader as before.
+  write_text(dir / "m.mtl", "newmtl red\nKd 1 0 0\nKa spectral red.rfl\n");
+  Scene s;
+  load_obj(s, write_text(dir / "m.obj", std::string("mtllib m.mtl\n") + kQuad + "usemtl red\nf 1 2 3\n"));
+  EXPECT_EQ(s.materials.at(0).albedo, glm::vec3(1, 0, 0));
 }
 
 TEST(LoaderObj, Sibenik) {

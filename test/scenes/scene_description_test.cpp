@@ -135,7 +135,7 @@ TEST(SceneDescription, FileErrors) {
                      {"absent.json", "not found"});
   expect_scene_error(
       [&] { load_scene_description(write_text(dir / "broken.json", R"({"geometry": [)")); },
-      {"broken.json", "malformed JSON"});
+      {"broken.json: not valid JSON at line 1, column 15"});
   expect_scene_error(
       [&] {
         load_scene_description(write_text(dir / "ply.json", R"({"geometry": ["mesh.ply"]})"));
@@ -146,6 +146,18 @@ TEST(SceneDescription, FileErrors) {
         load_scene_description(write_text(dir / "gone.json", R"({"geometry": ["gone.obj"]})"));
       },
       {"gone.obj", "not found"});
+}
+
+// Issue 39: as for a chip config, a repeated key (the last silently won) and nesting without
+// limit are refused, naming the file.
+TEST(SceneDescription, ADuplicateKeyOrDeepNestingIsRefusedNamingTheFile) {
+  TempDir dir;
+  const fs::path dup = write_text(
+      dir / "dup.json", R"({"geometry": ["a.obj"], "camera": {"eye": [0, 0, 5], "eye": [0, 0, 9]}})");
+  expect_scene_error([&] { load_scene_description(dup); }, {dup.string() + ": duplicate key 'camera.eye'"});
+  const fs::path deep = write_text(dir / "deep.json", "{\"geometry\": " + std::string(100000, '[') +
+                                                           std::string(100000, ']') + "}");
+  expect_scene_error([&] { load_scene_description(deep); }, {deep.string() + ": nested deeper than 64 levels"});
 }
 
 TEST(SceneDescription, OnlyDegenerateGeometryMeansNoTriangles) {
