@@ -35,6 +35,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
   access_gp_.set_extension(access_ext_);
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
+  ff_time_order_ = sampler_.enabled() && config_.timing.fast_forward_time_order;
   warm_log_.line_shift = 0;
   while ((1u << warm_log_.line_shift) < config_.l1d.line_bytes) ++warm_log_.line_shift;
   if (warming_) {
@@ -170,6 +171,7 @@ void ThreadMultiprocessor::run() {
         const Cycle next_window = sampler_.next_window(window);
         const Cycle ahead = Cycle{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles;
         const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
+        ff_others_ = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());
         } else {
