@@ -98,6 +98,10 @@ struct TimingConfig {
   // STRaTA's L1 misses, L2 accesses and DRAM bytes come out low (docs/sampled-timing.md,
   // "The fast-forward's ray schedule").
   bool fast_forward_time_order = true;
+  // Sampled: charge a fast-forwarded stream or global-register op the mean latency measured for
+  // its kind of outcome (assign found/none, pop ray/empty, push stored/full, global), not the
+  // mean over all of them (tm_sampler.h, OpClass).
+  bool fast_forward_op_classes = true;
   // Sampled: 0, or the relative half-width (e.g. 0.02) the 95% intervals of the statistics
   // sample_target_stats names should reach; the sampler then chooses the period itself
   // (window_sampler.h).

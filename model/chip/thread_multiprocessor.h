@@ -204,6 +204,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   // TM's other TPs) is deferred: the batch stops before it, and the TP resumes there when it
   // is the TM's earliest (tm_fast_forward.cpp).
   bool ff_time_order_ = false;
+  unsigned op_class_ = 0;  // TmSampler::OpClass of the stream/global op just executed
   transport::Cycle ff_others_ = 0;
 
   // The instruction being executed, for the hook.
