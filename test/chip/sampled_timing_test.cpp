@@ -292,8 +292,10 @@ TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
 // Issue 35: the fast-forward ran each TP in batches of up to 16 quanta, so its stream
 // operations changed the ray buffers in arrival order; the buffers then held more rays per
 // treelet than LT's, the detailed windows inherited them, and STRaTA's L2 accesses and DRAM
-// bytes came out 25-33% low (Sibenik 256x256). In time order (the default) every push, pop
-// and assignment of the frame reaches the stream memory in date order, as in LT.
+// bytes came out 12-33% low (Sibenik 256x256 and 512x512). In time order (the default) the
+// pushes, pops and assignments reach the stream memory in date order, as in LT. Neither LT nor
+// precise timing is strictly in order (on this frame about 1 in 1,000 ops is dated before one
+// already served: 39 in LT, 60 in precise), so the test asks for LT's level, not for 0.
 TEST(SampledTimingOrder, TheFastForwardChangesTheRayBuffersInTimeOrder) {
   TempDir dir;
   const char* design = "strata-pipelines";
@@ -302,12 +304,14 @@ TEST(SampledTimingOrder, TheFastForwardChangesTheRayBuffersInTimeOrder) {
   const nlohmann::json arrival =
       run_frame(dir, design, "sampled", "-arrival", " --set timing.fast_forward_time_order=false");
   ASSERT_FALSE(lt.is_null() || ordered.is_null() || arrival.is_null());
+  // The share of the frame's stream accesses dated before one already served.
   const auto late = [](const nlohmann::json& r) {
-    return r["memory"]["stream"]["schedule_ops_out_of_order"].get<uint64_t>();
+    const auto& s = r["memory"]["stream"];
+    return s["schedule_ops_out_of_order"].get<double>() / s["accesses"].get<double>();
   };
-  EXPECT_EQ(late(lt), 0u);
-  EXPECT_EQ(late(ordered), 0u);
-  EXPECT_GT(late(arrival), 100u);
+  EXPECT_LT(late(lt), 0.01);
+  EXPECT_LT(late(ordered), 0.01);
+  EXPECT_GT(late(arrival), 0.10);  // 45% on this frame
   EXPECT_GT(ordered["sampling"]["fast_forward_instructions"].get<double>(),
             0.2 * ordered["instructions"]["retired"].get<double>());
   EXPECT_EQ(ordered["rays"], lt["rays"]);  // and both equal the twin's (--check)
