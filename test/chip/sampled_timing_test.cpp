@@ -219,7 +219,10 @@ TEST_P(SampledTiming, ATargetOnDramBytesTimesMoreThanOneOnCyclesAlone) {
   EXPECT_GT(relative(cycles, "/memory/dram/bytes"), 2 * relative(cycles, "/frame/cycles"));
   EXPECT_GT(dram["sampling"]["timed_instructions"].get<double>(),
             1.5 * cycles["sampling"]["timed_instructions"].get<double>());
-  EXPECT_LT(relative(dram, "/memory/dram/bytes"), relative(cycles, "/memory/dram/bytes"));
+  // Not asserted: that the DRAM interval narrows. Most of this frame's DRAM traffic is its
+  // cold start, inside one window, and no number of windows narrows that (trax, measured
+  // 2026-12-06: 0.79-0.92 at 40 and at 345 windows, in either fast-forward order);
+  // docs/sampled-timing.md, "STRaTA's memory bias", the cold start.
   // Per named statistic: stats.json's intervals.target, and a line of the summary.
   const auto& t = dram["intervals"]["target"];
   EXPECT_EQ(t["error"], 0.1);
@@ -270,12 +273,16 @@ TEST(SampledTimingTargets, ABadStatisticNameIsRefusedWithTheFieldNamed) {
 // runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that
 // knob trades); they compute the same rays, and the frame estimate stays where the shorter
 // batches put it.
+// For the STRaTA designs this holds in arrival order: in time order (the default) a batch
+// mostly ends at its first stream operation dated past the TM's runner-up, whatever its length
+// (strata-pipelines here: 19,916 batches of 1 quantum, 23,899 of 4).
 TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
   TempDir dir;
+  const std::string order = std::string(GetParam()) == "trax" ? "" : " --set timing.fast_forward_time_order=false";
   const nlohmann::json short_batches =
-      run_frame(dir, GetParam(), "sampled", "-short", " --set timing.fast_forward_batch_quanta=1");
+      run_frame(dir, GetParam(), "sampled", "-short", " --set timing.fast_forward_batch_quanta=1" + order);
   const nlohmann::json long_batches =
-      run_frame(dir, GetParam(), "sampled", "-long", " --set timing.fast_forward_batch_quanta=4");
+      run_frame(dir, GetParam(), "sampled", "-long", " --set timing.fast_forward_batch_quanta=4" + order);
   ASSERT_FALSE(short_batches.is_null() || long_batches.is_null());
   const auto& ss = short_batches["sampling"];
   const auto& ls = long_batches["sampling"];
