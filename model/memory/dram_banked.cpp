@@ -1,0 +1,218 @@
+#include "model/memory/dram_banked.h"
+
+#include <algorithm>
+#include <string>
+
+namespace strata::memory {
+
+namespace {
+uint32_t log2_of(uint64_t pow2) {
+  uint32_t n = 0;
+  while ((uint64_t{1} << n) < pow2) ++n;
+  return n;
+}
+using transport::Cycle;
+Cycle later(Cycle a, Cycle b) { return a > b ? a : b; }
+}  // namespace
+
+BankedDram::BankedDram(const DramConfig& config)
+    : config_(config),
+      timing_(DramTiming::at(config.banked, 1.0, config.channel_bytes_per_cycle())),
+      stats_("banked", "Banked DRAM (memory.dram.model = banked): row buffers, commands and refresh.") {
+  const DramTimingConfig& b = config_.banked;
+  interleave_shift_ = log2_of(config_.interleave_bytes);
+  column_shift_ = log2_of(b.row_bytes);
+  bank_bits_ = log2_of(b.banks());
+  channels_.resize(config_.channels);
+  for (Channel& ch : channels_) {
+    ch.banks.resize(b.banks());
+    ch.ranks.resize(b.ranks);
+  }
+  set_clock_ghz(1.0);
+  counters_.resize(config_.channels);
+
+  using stats::Unit;
+  std::vector<const stats::Group*> each;
+  for (uint32_t c = 0; c < config_.channels; ++c) {
+    ChannelCounters& k = counters_[c];
+    auto g = std::make_unique<stats::Group>("channel" + std::to_string(c), "The banked DRAM's channels.");
+    g->count("row_hits", &k.row_hits, Unit::kCount, "Requests whose row was open in its bank.");
+    g->count("row_misses", &k.row_misses, Unit::kCount, "Requests to a closed (precharged) bank: an ACT first.");
+    g->count("row_conflicts", &k.row_conflicts, Unit::kCount,
+             "Requests to a bank with another row open: a PRE and an ACT first.");
+    g->count("activates", &k.activates, Unit::kCount, "ACT commands.");
+    g->count("precharges", &k.precharges, Unit::kCount, "PRE commands (closed page: one per request).");
+    g->count("read_commands", &k.reads, Unit::kCount, "RD commands, one per column (column_bytes).");
+    g->count("write_commands", &k.writes, Unit::kCount, "WR commands, one per column (column_bytes).");
+    g->count("refreshes", &k.refreshes, Unit::kCount, "All-bank refreshes, every tREFI per rank up to the last request.");
+    g->count("refresh_cycles", &k.refresh_cycles, Unit::kCycles,
+             "Cycles ranks spent refreshing (tRFC per refresh), summed over ranks.");
+    g->count("read_requests", &k.read_requests, Unit::kCount, "Read requests.");
+    g->count("read_latency_cycles", &k.read_latency_cycles, Unit::kCycles,
+             "Cycles from each read request to its last data, summed.");
+    g->ratio("mean_read_latency_cycles", "read_latency_cycles", {"read_requests"},
+             "Mean cycles from a read request to its last data (cycles, though a ratio).");
+    each.push_back(g.get());
+    channel_stats_.push_back(std::move(g));
+  }
+  stats_.instances("channels", each, "channel", "Banked DRAM channel");
+}
+
+void BankedDram::set_clock_ghz(double ghz) {
+  timing_ = DramTiming::at(config_.banked, ghz, config_.channel_bytes_per_cycle());
+  // Ranks refresh in turn, spread over the interval, so the channel is never blocked whole.
+  for (Channel& ch : channels_)
+    for (uint32_t r = 0; r < ch.ranks.size(); ++r)
+      ch.ranks[r].next_refresh = timing_.refi + uint64_t{r} * timing_.refi / ch.ranks.size();
+}
+
+BankedDram::Location BankedDram::locate(uint64_t addr) const {
+  // Take the channel's bits out (channel is the lowest field above the interleave block), so
+  // consecutive blocks of one channel are consecutive in its rows.
+  const uint64_t block = addr >> interleave_shift_;
+  const uint64_t local =
+      ((block / config_.channels) << interleave_shift_) | (addr & ((uint64_t{1} << interleave_shift_) - 1));
+  const uint64_t bank_mask = (uint64_t{1} << bank_bits_) - 1;
+  Location at;
+  at.row = local >> (column_shift_ + bank_bits_);
+  uint64_t bank = (local >> column_shift_) & bank_mask;
+  if (config_.banked.hash_banks) bank ^= at.row & bank_mask;  // rows a power of two apart differ in bank
+  at.bank = static_cast<uint32_t>(bank);
+  const DramTimingConfig& b = config_.banked;
+  // Bank groups take the lowest bits, so neighbouring rows alternate groups (tCCD_S, tRRD_S).
+  at.group = at.bank % b.bank_groups;
+  at.rank = at.bank / (b.bank_groups * b.banks_per_group);
+  return at;
+}
+
+// A rank refreshes all its banks at once: every open row is precharged first (as soon as
+// each bank allows), then REF holds the rank for tRFC. Applied when a request reaches a time
+// at or past the refresh that was due.
+void BankedDram::refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelCounters& k) {
+  Rank& r = ch.ranks[rank];
+  const uint32_t per_rank = config_.banked.bank_groups * config_.banked.banks_per_group;
+  while (r.next_refresh <= until) {
+    Cycle start = r.next_refresh;
+    for (uint32_t i = 0; i < per_rank; ++i) {
+      const Bank& b = ch.banks[rank * per_rank + i];
+      start = later(start, b.open ? later(r.next_refresh, b.next_pre) + timing_.rp : b.next_act);
+    }
+    for (uint32_t i = 0; i < per_rank; ++i) {
+      Bank& b = ch.banks[rank * per_rank + i];
+      if (b.open) ++k.precharges;
+      b.open = false;
+      b.next_act = start + timing_.rfc;
+    }
+    ++k.refreshes;
+    k.refresh_cycles += timing_.rfc;
+    r.next_refresh += timing_.refi;
+  }
+}
+
+// The first cycle >= from at which the bank of `at` may be activated.
+Cycle BankedDram::earliest_act(const Channel& ch, const Location& at, Cycle from) const {
+  const Bank& b = ch.banks[at.bank];
+  const Rank& r = ch.ranks[at.rank];
+  Cycle t = later(from, b.next_act);
+  if (b.last_act != kNever) t = later(t, b.last_act + timing_.rc);
+  if (r.last_act != kNever) t = later(t, r.last_act + (r.last_act_group == at.group ? timing_.rrd_l : timing_.rrd_s));
+  const Cycle oldest = r.acts[r.act_slot];  // the fourth ACT back: a fifth waits tFAW after it
+  if (oldest != kNever) t = later(t, oldest + timing_.faw);
+  return t;
+}
+
+BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t,
+                                      transport::ReservationCalendar& bus, bool count) {
+  Channel& ch = channels_[channel];
+  ChannelCounters scratch;
+  ChannelCounters& k = count ? counters_[channel] : scratch;
+  const Location at = locate(addr);
+  Bank& bank = ch.banks[at.bank];
+  Rank& rank = ch.ranks[at.rank];
+  const Cycle arrive = t + timing_.controller;
+
+  // The request's first command (PRE, ACT, or its first column command on a row hit) must
+  // come before the rank's next refresh; else the refresh goes first and the plan is redone.
+  bool hit = false, conflict = false;
+  Cycle pre = 0, act = 0, col_ready = 0;
+  for (;;) {
+    refresh_until(ch, at.rank, arrive, k);
+    hit = bank.open && bank.row == at.row;
+    conflict = bank.open && !hit;
+    Cycle first;
+    if (hit) {
+      col_ready = later(arrive, bank.next_col);
+      first = col_ready;
+    } else {
+      pre = conflict ? later(arrive, bank.next_pre) : 0;
+      act = earliest_act(ch, at, conflict ? pre + timing_.rp : arrive);
+      col_ready = act + timing_.rcd;
+      first = conflict ? pre : act;
+    }
+    if (first < rank.next_refresh) break;
+    refresh_until(ch, at.rank, first, k);
+  }
+
+  if (hit) {
+    ++k.row_hits;
+  } else {
+    if (conflict) {
+      ++k.row_conflicts;
+      ++k.precharges;
+    } else {
+      ++k.row_misses;
+    }
+    ++k.activates;
+    bank.open = true;
+    bank.row = at.row;
+    bank.last_act = act;
+    bank.next_act = later(bank.next_act, act + timing_.rc);
+    bank.next_pre = later(bank.next_pre, act + timing_.ras);
+    bank.next_col = act + timing_.rcd;
+    rank.acts[rank.act_slot] = act;
+    rank.act_slot = (rank.act_slot + 1) % 4;
+    rank.last_act = act;
+    rank.last_act_group = at.group;
+  }
+
+  // Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a
+  // write) allow, then as early as the data bus has room: a busy bus delays the command.
+  const uint32_t column = config_.banked.column_bytes;
+  const uint32_t columns = std::max<uint32_t>(1, (bytes + column - 1) / column);
+  const Cycle latency = write ? timing_.cwl : timing_.cl;
+  Result result;
+  for (uint32_t i = 0; i < columns; ++i) {
+    Cycle c = col_ready;
+    if (rank.last_col != kNever)
+      c = later(c, rank.last_col + (rank.last_col_group == at.group ? timing_.ccd_l : timing_.ccd_s));
+    if (!write) c = later(c, rank.write_data_end + timing_.wtr);
+    const transport::Booking data = bus.book(c + latency, column);
+    result.queued += data.first - (c + latency);
+    c = data.first - latency;
+    rank.last_col = c;
+    rank.last_col_group = at.group;
+    if (write) {
+      ++k.writes;
+      rank.write_data_end = later(rank.write_data_end, data.end());
+      bank.next_pre = later(bank.next_pre, data.end() + timing_.wr);
+    } else {
+      ++k.reads;
+      bank.next_pre = later(bank.next_pre, c + timing_.rtp);
+    }
+    col_ready = c;
+    result.end = later(result.end, data.end());
+  }
+
+  if (config_.banked.row_policy == RowPolicy::kClosed) {  // auto-precharge after the last column
+    ++k.precharges;
+    bank.open = false;
+    bank.next_act = later(bank.next_act, bank.next_pre + timing_.rp);
+  }
+  if (!write) {
+    ++k.read_requests;
+    k.read_latency_cycles += result.end - t;
+  }
+  return result;
+}
+
+}  // namespace strata::memory

@@ -1,0 +1,213 @@
+// The banked DRAM model (memory.dram.model = banked) on one channel, against command timings
+// worked out by hand from the GDDR5 preset at 1 GHz (1 ns = 1 cycle): tRCD 14, tRP 14, tCL 12,
+// tRAS 32, tRC 46, tRRD_S 6 (5.5 ns rounded up), tRRD_L 6, tCCD_S 1, tCCD_L 2, tRTP 2,
+// tREFI 1900, tRFC 110; a 32-byte column holds the 32 B/cycle bus for 1 cycle.
+// One channel and no bank hash, so an address reads directly as row:bank:column: a 2 KB row,
+// bank = (addr >> 11) & 15 (bank group = bank % 4), row = addr >> 15.
+#include "memory_test_support.h"
+#include "model/stats/stat_values.h"
+
+#include "model/memory/dram.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace strata::memory::test {
+namespace {
+
+constexpr uint64_t kBank = 1u << 11, kRow = 1u << 15;
+constexpr Cycle kRcd = 14, kCl = 12, kBurst = 1, kRc = 46, kRefi = 1900, kRfc = 110;
+
+DramConfig one_channel() {
+  DramConfig c;
+  c.model = DramModel::kBanked;
+  c.channels = 1;
+  c.bytes_per_cycle = 32;
+  c.hash_channels = false;
+  c.banked.hash_banks = false;
+  return c;
+}
+
+struct Rig {
+  SparseMemory backing;
+  Dram dram;
+  RawInitiator port{"port"};
+  explicit Rig(const DramConfig& c) : dram("dram", c, backing) { port.socket.bind(dram.target); }
+  const BankedDram::ChannelCounters& k() const { return dram.banked()->channel(0); }
+};
+
+Sent read32(RawInitiator& p, uint64_t addr, Cycle at) {
+  uint8_t buf[32] = {};
+  return p.send(AccessClass::kDataLoad, addr, buf, 32, at, transport::kNoTreelet, true);
+}
+
+TEST(DramBanked, ReadToAClosedBankTakesRcdPlusClPlusBurst) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent r;
+  Script s("script", [&] { r = read32(rig.port, 0, 0); });
+  sc_core::sc_start();
+  EXPECT_EQ(r.done, kRcd + kCl + kBurst);  // ACT 0, RD 14, data 26
+  EXPECT_EQ(r.served_by, ServedBy::kDram);
+  EXPECT_EQ(rig.k().row_misses, 1u);
+  EXPECT_EQ(rig.k().activates, 1u);
+  EXPECT_EQ(rig.k().read_latency_cycles, 27u);
+}
+
+TEST(DramBanked, RowHitTakesClPlusBurst) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent first, hit;
+  Script s("script", [&] {
+    first = read32(rig.port, 0, 0);
+    hit = read32(rig.port, 32, 100);  // the next column of the open row
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(first.done, 27u);
+  EXPECT_EQ(hit.done, 100 + kCl + kBurst);
+  EXPECT_EQ(rig.k().row_hits, 1u);
+  EXPECT_EQ(rig.k().row_misses, 1u);
+  stats::Values v = stats::Values::snapshot(rig.dram.stats());
+  v.derive();
+  EXPECT_EQ(v.count("banked.channels.row_hits"), 1u);
+  EXPECT_DOUBLE_EQ(v.number("banked.channels.mean_read_latency_cycles"), (27.0 + 13.0) / 2);
+}
+
+TEST(DramBanked, ClosedPagePolicyMakesTheSecondAccessAMiss) {
+  REQUIRE_FRESH_SYSTEMC();
+  DramConfig c = one_channel();
+  c.banked.row_policy = RowPolicy::kClosed;
+  Rig rig(c);
+  Sent second;
+  Script s("script", [&] {
+    read32(rig.port, 0, 0);
+    second = read32(rig.port, 32, 100);  // precharged at 32 (tRAS), ready again at 46
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(second.done, 100 + kRcd + kCl + kBurst);
+  EXPECT_EQ(rig.k().row_hits, 0u);
+  EXPECT_EQ(rig.k().row_misses, 2u);
+  EXPECT_EQ(rig.k().precharges, 2u);
+}
+
+TEST(DramBanked, BackToBackRowConflictsInOneBankAreSpacedByTrc) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent r[3];
+  Script s("script", [&] {
+    for (int i = 0; i < 3; ++i) r[i] = read32(rig.port, i * kRow, 0);  // bank 0, rows 0, 1, 2
+  });
+  sc_core::sc_start();
+  // PRE at ACT + tRAS (32), ACT at PRE + tRP = ACT + tRC (46): ACTs at 0, 46, 92.
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(r[i].done, i * kRc + kRcd + kCl + kBurst) << i;
+  EXPECT_EQ(rig.k().row_conflicts, 2u);
+  EXPECT_EQ(rig.k().precharges, 2u);
+}
+
+TEST(DramBanked, FawAllowsFourActivatesPerWindow) {
+  REQUIRE_FRESH_SYSTEMC();
+  DramConfig c = one_channel();
+  c.banked.t_faw_ns = 40;  // longer than 4 x tRRD, so the window, not tRRD, holds the fifth
+  Rig rig(c);
+  Sent r[5];
+  Script s("script", [&] {
+    for (int i = 0; i < 5; ++i) r[i] = read32(rig.port, i * kBank, 0);  // banks 0..4, groups 0,1,2,3,0
+  });
+  sc_core::sc_start();
+  // ACTs 6 apart (tRRD_S): 0, 6, 12, 18; the fifth waits for the first + tFAW = 40.
+  const Cycle act[] = {0, 6, 12, 18, 40};
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(r[i].done, act[i] + kRcd + kCl + kBurst) << i;
+}
+
+TEST(DramBanked, RefreshBlocksTheRankForTrfcAndClosesRows) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent at_refresh, after;
+  Script s("script", [&] {
+    at_refresh = read32(rig.port, kBank, kRefi);  // closed bank, the refresh falls due now
+    after = read32(rig.port, kBank + 32, 2 * kRefi + 50);  // its row was open; the 2nd refresh closed it
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(at_refresh.done, kRefi + kRfc + kRcd + kCl + kBurst);
+  // Refresh 2 falls due at 3800 with bank 1's row open (PRE allowed since 2010 + tRAS): it
+  // precharges at 3800 and refreshes at 3800 + tRP = 3814, until 3924.
+  EXPECT_EQ(after.done, 2 * kRefi + 14 + kRfc + kRcd + kCl + kBurst);
+  EXPECT_EQ(rig.k().refreshes, 2u);
+  EXPECT_EQ(rig.k().refresh_cycles, 2 * kRfc);
+  EXPECT_EQ(rig.k().row_misses, 2u);
+}
+
+TEST(DramBanked, WritesUseTcwlAndDelayAFollowingReadByTwtr) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent w, r;
+  Script s("script", [&] {
+    uint8_t buf[32] = {};
+    w = rig.port.send(AccessClass::kDataStore, 0, buf, 32, 0, transport::kNoTreelet, true);
+    r = read32(rig.port, 32, 0);  // a row hit, but tWTR after the write's data
+  });
+  sc_core::sc_start();
+  // WR at 14, data at 14 + tCWL (3.5 ns -> 4) = 18, ends 19; RD at 19 + tWTR 5 = 24, data 36.
+  EXPECT_EQ(w.done, 19u);
+  EXPECT_EQ(r.done, 24 + kCl + kBurst);
+}
+
+TEST(DramBanked, AddressMapHashesBanksAndSpreadsTreeletAlignedRows) {
+  REQUIRE_FRESH_SYSTEMC();
+  DramConfig c = one_channel();
+  c.banked.hash_banks = true;
+  SparseMemory backing;
+  Dram dram("dram", c, backing);
+  const BankedDram& b = *dram.banked();
+  EXPECT_EQ(b.locate(5 * kBank + 3 * kRow).bank, 5u ^ 3u);
+  EXPECT_EQ(b.locate(5 * kBank + 3 * kRow).row, 3u);
+  EXPECT_EQ(b.locate(5 * kBank + 3 * kRow).group, (5u ^ 3u) % 4);
+  // 32 KB-aligned treelets (one row apart here) no longer all open rows in bank 0.
+  EXPECT_NE(b.locate(0).bank, b.locate(kRow).bank);
+}
+
+TEST(DramBanked, ThePresetPassesTheRulesAndGives256GBPerSecond) {
+  DramConfig c;
+  c.model = DramModel::kBanked;
+  EXPECT_NO_THROW(c.validate());
+  // 8 channels x one 32-byte column per cycle (tCCD_S = 1 ns) at 1 GHz.
+  EXPECT_EQ(c.channels * c.banked.column_bytes, 256u);
+  EXPECT_EQ(DramTiming::at(c.banked, 1.0, c.channel_bytes_per_cycle()).burst, 1u);
+  EXPECT_EQ(c.bytes_per_cycle, 256u);
+}
+
+TEST(DramBanked, InconsistentTimingsAreRefusedNamingTheField) {
+  const struct {
+    void (*change)(DramTimingConfig&);
+    const char* expected;
+  } cases[] = {
+      {[](DramTimingConfig& t) { t.t_rc_ns = 40; }, "dram.banked.t_rc_ns: must be at least t_ras_ns + t_rp_ns (46 ns)"},
+      {[](DramTimingConfig& t) { t.t_ras_ns = 10; }, "dram.banked.t_ras_ns: must be at least t_rcd_ns"},
+      {[](DramTimingConfig& t) { t.t_rrd_l_ns = 5; }, "dram.banked.t_rrd_l_ns: must be at least t_rrd_s_ns"},
+      {[](DramTimingConfig& t) { t.t_ccd_l_ns = 0.5; }, "dram.banked.t_ccd_l_ns: must be at least t_ccd_s_ns"},
+      {[](DramTimingConfig& t) { t.t_rfc_ns = 5000; }, "dram.banked.t_refi_ns: must be longer than t_rfc_ns"},
+      {[](DramTimingConfig& t) { t.t_cl_ns = -1; }, "dram.banked.t_cl_ns: must be 0..1e6 ns"},
+      {[](DramTimingConfig& t) { t.bank_groups = 3; }, "dram.banked.bank_groups: must be a power of two"},
+      {[](DramTimingConfig& t) { t.column_bytes = 16; }, "dram.banked.column_bytes: must be a whole number of cycles"},
+      {[](DramTimingConfig& t) { t.row_bytes = 16; }, "dram.banked.row_bytes: must hold at least one column"},
+  };
+  for (const auto& c : cases) {
+    DramConfig config;
+    config.model = DramModel::kBanked;
+    c.change(config.banked);
+    std::string e;
+    try {
+      config.validate();
+    } catch (const std::invalid_argument& x) {
+      e = x.what();
+    }
+    EXPECT_NE(e.find(c.expected), std::string::npos) << e;
+  }
+  // The channel model ignores the banked fields.
+  DramConfig channel;
+  channel.banked.t_rc_ns = 1;
+  EXPECT_NO_THROW(channel.validate());
+}
+
+}  // namespace
+}  // namespace strata::memory::test
