@@ -9,8 +9,10 @@
 
 #include "model/memory/dram.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace strata::memory::test {
 namespace {
@@ -150,6 +152,59 @@ TEST(DramBanked, WritesUseTcwlAndDelayAFollowingReadByTwtr) {
   // WR at 14, data at 14 + tCWL (3.5 ns -> 4) = 18, ends 19; RD at 19 + tWTR 5 = 24, data 36.
   EXPECT_EQ(w.done, 19u);
   EXPECT_EQ(r.done, 24 + kCl + kBurst);
+}
+
+// Row hits that alternate bank groups issue a column per cycle (tCCD_S = 1): the bus's peak.
+TEST(DramBanked, HitsAcrossBankGroupsStreamAtTheBusRate) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  std::vector<Sent> r;
+  Script s("script", [&] {
+    for (uint64_t b = 0; b < 4; ++b) read32(rig.port, b * kBank, 0);  // open a row in each group
+    for (uint64_t i = 0; i < 64; ++i) r.push_back(read32(rig.port, (i % 4) * kBank + 32 * (1 + i / 4), 200));
+  });
+  sc_core::sc_start();
+  for (uint64_t i = 0; i < 64; ++i) EXPECT_EQ(r[i].done, 200 + i + kCl + kBurst) << i;
+  EXPECT_EQ(rig.k().row_hits, 64u);
+}
+
+// Random traffic over 8 channels: every request is exactly one of hit, miss or conflict, and
+// each channel has refreshed once per tREFI up to its last request.
+TEST(DramBanked, RandomTrafficCountsAddUpAndRefreshKeepsPace) {
+  REQUIRE_FRESH_SYSTEMC();
+  DramConfig c;
+  c.model = DramModel::kBanked;
+  SparseMemory backing;
+  Dram dram("dram", c, backing);
+  RawInitiator port("port");
+  port.socket.bind(dram.target);
+  // Kept inside the bus calendars' horizon (16384 cycles; the script never advances time):
+  // random rows are bound by tFAW, about 6 cycles per ACT per channel.
+  constexpr uint64_t kRequests = 8000;
+  Cycle last = 0;
+  Script s("script", [&] {
+    uint64_t x = 12345;
+    uint8_t line[64];
+    for (uint64_t k = 0; k < kRequests; ++k) {
+      x = x * 6364136223846793005ull + 1442695040888963407ull;
+      const uint64_t addr = ((x >> 20) % (256ull << 20)) & ~uint64_t{63};
+      const AccessClass a = (x >> 60) == 0 ? AccessClass::kDataStore : AccessClass::kDataLoad;
+      const Sent r = port.send(a, addr, line, 64, k / 2, transport::kNoTreelet, true);  // half the peak
+      last = std::max(last, r.done);
+    }
+  });
+  sc_core::sc_start();
+  uint64_t requests = 0;
+  for (uint32_t ch = 0; ch < c.channels; ++ch) {
+    const BankedDram::ChannelCounters& k = dram.banked()->channel(ch);
+    EXPECT_EQ(k.row_hits + k.row_misses + k.row_conflicts, dram.channel(ch).requests) << ch;
+    EXPECT_EQ(k.reads + k.writes, 2 * dram.channel(ch).requests) << ch;  // 64 B = 2 columns
+    EXPECT_LE(k.refreshes, last / kRefi) << ch;
+    EXPECT_GE(k.refreshes + 1, (kRequests / 2) / kRefi) << ch;
+    requests += dram.channel(ch).requests;
+  }
+  EXPECT_EQ(requests, kRequests);
+  EXPECT_EQ(dram.overflow_bookings(), 0u);
 }
 
 TEST(DramBanked, AddressMapHashesBanksAndSpreadsTreeletAlignedRows) {
