@@ -42,7 +42,10 @@ void DramTimingConfig::validate(uint32_t channel_bytes_per_cycle) const {
   need_pow2("ranks", ranks);
   need_pow2("bank_groups", bank_groups);
   need_pow2("banks_per_group", banks_per_group);
-  if (banks() > 1024) bad("banks_per_group", "ranks x bank_groups x banks_per_group must be at most 1024", banks());
+  // In 64 bits: three large powers of two would wrap a 32-bit product to 0 and pass.
+  const uint64_t banks = uint64_t{ranks} * bank_groups * banks_per_group;
+  if (banks > 1024)
+    bad("banks_per_group", "ranks x bank_groups x banks_per_group must be at most 1024", static_cast<double>(banks));
   need_pow2("column_bytes", column_bytes);
   need_pow2("row_bytes", row_bytes);
   if (row_bytes < column_bytes) bad("row_bytes", "must hold at least one column (column_bytes)", row_bytes);
