@@ -83,6 +83,7 @@ void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trac
 uint64_t Dram::overflow_bookings() const {
   uint64_t n = 0;
   for (const auto& b : buses_) n += b.overflow_bookings();
+  if (banked_) n += banked_->overflow_bookings();
   return n;
 }
 
@@ -112,7 +113,7 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   const bool counted = transport::counts(ext);  // sampled timing measures part of each detailed window only
   Cycle end = 0, queued = 0;
   if (banked_) {
-    const BankedDram::Result r = banked_->access(ch, addr, bytes, write, t, bus, counted);
+    const BankedDram::Result r = banked_->access(ch, addr, bytes, write, t, now, bus, counted);
     end = r.end;
     queued = r.queued;
   } else {

@@ -15,6 +15,16 @@ using transport::Cycle;
 Cycle later(Cycle a, Cycle b) { return a > b ? a : b; }
 }  // namespace
 
+BankedDram::Rank::Rank(uint32_t groups, uint32_t horizon)
+    : acts(1, horizon), columns(1, horizon), window(4, horizon) {
+  group_acts.reserve(groups);
+  group_columns.reserve(groups);
+  for (uint32_t g = 0; g < groups; ++g) {
+    group_acts.emplace_back(1, horizon);
+    group_columns.emplace_back(1, horizon);
+  }
+}
+
 BankedDram::BankedDram(const DramConfig& config)
     : config_(config),
       timing_(DramTiming::at(config.banked, 1.0, config.channel_bytes_per_cycle())),
@@ -26,7 +36,8 @@ BankedDram::BankedDram(const DramConfig& config)
   channels_.resize(config_.channels);
   for (Channel& ch : channels_) {
     ch.banks.resize(b.banks());
-    ch.ranks.resize(b.ranks);
+    ch.ranks.reserve(b.ranks);
+    for (uint32_t r = 0; r < b.ranks; ++r) ch.ranks.emplace_back(b.bank_groups, config_.calendar_horizon_cycles);
   }
   set_clock_ghz(1.0);
   counters_.resize(config_.channels);
@@ -86,8 +97,8 @@ BankedDram::Location BankedDram::locate(uint64_t addr) const {
 }
 
 // A rank refreshes all its banks at once: every open row is precharged first (as soon as
-// each bank allows), then REF holds the rank for tRFC. Applied when a request reaches a time
-// at or past the refresh that was due.
+// each bank allows), then REF holds the rank for tRFC (no ACT in it). Applied when a request
+// reaches a time at or past the refresh that was due.
 void BankedDram::refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelCounters& k) {
   Rank& r = ch.ranks[rank];
   const uint32_t per_rank = config_.banked.bank_groups * config_.banked.banks_per_group;
@@ -101,28 +112,72 @@ void BankedDram::refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelC
       Bank& b = ch.banks[rank * per_rank + i];
       if (b.open) ++k.precharges;
       b.open = false;
-      b.next_act = start + timing_.rfc;
     }
+    r.refresh_from = start;
+    r.refresh_to = start + timing_.rfc;
     ++k.refreshes;
     k.refresh_cycles += timing_.rfc;
     r.next_refresh += timing_.refi;
   }
 }
 
-// The first cycle >= from at which the bank of `at` may be activated.
-Cycle BankedDram::earliest_act(const Channel& ch, const Location& at, Cycle from) const {
-  const Bank& b = ch.banks[at.bank];
-  const Rank& r = ch.ranks[at.rank];
-  Cycle t = later(from, b.next_act);
-  if (b.last_act != kNever) t = later(t, b.last_act + timing_.rc);
-  if (r.last_act != kNever) t = later(t, r.last_act + (r.last_act_group == at.group ? timing_.rrd_l : timing_.rrd_s));
-  const Cycle oldest = r.acts[r.act_slot];  // the fourth ACT back: a fifth waits tFAW after it
-  if (oldest != kNever) t = later(t, oldest + timing_.faw);
-  return t;
+namespace {
+// The first cycle >= from where `length` cycles of `c` are free (from itself if length is 0:
+// no constraint); kNone beyond the horizon.
+Cycle gap(const transport::ReservationCalendar& c, Cycle from, uint32_t length) {
+  return length == 0 ? from : c.first_gap(from, length);
+}
+constexpr Cycle kNone = transport::ReservationCalendar::kNone;
+}  // namespace
+
+Cycle BankedDram::act_slot(const Rank& r, uint32_t group, Cycle from) const {
+  // Each calendar can only move the cycle later; stop when all three agree.
+  for (Cycle a = from;;) {
+    Cycle b = gap(r.acts, a, timing_.rrd_s);
+    if (b != kNone) b = gap(r.group_acts[group], b, timing_.rrd_l);
+    if (b != kNone) b = gap(r.window, b, timing_.faw);
+    if (b == kNone || b == a) return b == kNone ? kNever : b;
+    a = b;
+  }
+}
+
+void BankedDram::book_act(Rank& r, uint32_t group, Cycle at) {
+  if (timing_.rrd_s > 0) r.acts.book(at, timing_.rrd_s);
+  if (timing_.rrd_l > 0) r.group_acts[group].book(at, timing_.rrd_l);
+  for (Cycle c = at; c < at + timing_.faw; ++c) r.window.book_below(c, 4);
+}
+
+Cycle BankedDram::column_slot(const Rank& r, uint32_t group, Cycle from, Cycle lead, const Calendar& bus) const {
+  for (Cycle a = from;;) {
+    Cycle b = gap(r.columns, a, timing_.ccd_s);
+    if (b != kNone) b = gap(r.group_columns[group], b, timing_.ccd_l);
+    if (b != kNone) {  // the data's cycles on the bus, whole (every booking fills whole cycles)
+      b = bus.first_gap(b + lead, timing_.burst);
+      if (b != kNone) b -= lead;
+    }
+    if (b == kNone || b == a) return b == kNone ? kNever : b;
+    a = b;
+  }
+}
+
+void BankedDram::book_column(Rank& r, uint32_t group, Cycle at) {
+  if (timing_.ccd_s > 0) r.columns.book(at, timing_.ccd_s);
+  if (timing_.ccd_l > 0) r.group_columns[group].book(at, timing_.ccd_l);
+}
+
+uint64_t BankedDram::overflow_bookings() const {
+  uint64_t n = overflows_;
+  for (const Channel& ch : channels_)
+    for (const Rank& r : ch.ranks) {
+      n += r.acts.overflow_bookings() + r.columns.overflow_bookings() + r.window.overflow_bookings();
+      for (const Calendar& c : r.group_acts) n += c.overflow_bookings();
+      for (const Calendar& c : r.group_columns) n += c.overflow_bookings();
+    }
+  return n;
 }
 
 BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t,
-                                      transport::ReservationCalendar& bus, bool count) {
+                                      Cycle now, transport::ReservationCalendar& bus, bool count) {
   Channel& ch = channels_[channel];
   ChannelCounters scratch;
   ChannelCounters& k = count ? counters_[channel] : scratch;
@@ -130,6 +185,11 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   Bank& bank = ch.banks[at.bank];
   Rank& rank = ch.ranks[at.rank];
   const Cycle arrive = t + timing_.controller;
+  rank.acts.retire_before(now);
+  rank.columns.retire_before(now);
+  rank.window.retire_before(now);
+  rank.group_acts[at.group].retire_before(now);
+  rank.group_columns[at.group].retire_before(now);
 
   // The request's first command (PRE, ACT, or its first column command on a row hit) must
   // come before the rank's next refresh; else the refresh goes first and the plan is redone.
@@ -145,7 +205,15 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
       first = col_ready;
     } else {
       pre = conflict ? later(arrive, bank.next_pre) : 0;
-      act = earliest_act(ch, at, conflict ? pre + timing_.rp : arrive);
+      Cycle from = later(conflict ? pre + timing_.rp : arrive, bank.next_act);
+      if (bank.last_act != kNever) from = later(from, bank.last_act + timing_.rc);
+      act = act_slot(rank, at.group, from);
+      if (act != kNever && act >= rank.refresh_from && act < rank.refresh_to)  // not during a refresh
+        act = act_slot(rank, at.group, rank.refresh_to);
+      if (act == kNever) {  // beyond the horizon: without the rank's constraints
+        act = from < rank.refresh_from || from >= rank.refresh_to ? from : rank.refresh_to;
+        ++overflows_;
+      }
       col_ready = act + timing_.rcd;
       first = conflict ? pre : act;
     }
@@ -169,10 +237,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     bank.next_act = later(bank.next_act, act + timing_.rc);
     bank.next_pre = later(bank.next_pre, act + timing_.ras);
     bank.next_col = act + timing_.rcd;
-    rank.acts[rank.act_slot] = act;
-    rank.act_slot = (rank.act_slot + 1) % 4;
-    rank.last_act = act;
-    rank.last_act_group = at.group;
+    book_act(rank, at.group, act);
   }
 
   // Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a
@@ -182,18 +247,24 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   const Cycle latency = write ? timing_.cwl : timing_.cl;
   Result result;
   for (uint32_t i = 0; i < columns; ++i) {
-    Cycle c = col_ready;
-    if (rank.last_col != kNever)
-      c = later(c, rank.last_col + (rank.last_col_group == at.group ? timing_.ccd_l : timing_.ccd_s));
-    if (!write) c = later(c, rank.write_data_end + timing_.wtr);
+    Cycle want = col_ready;
+    // tWTR: a read after (in call order) a write whose command it would follow.
+    if (!write && rank.last_write != kNever && want >= rank.last_write)
+      want = later(want, rank.write_data_end + timing_.wtr);
+    Cycle c = column_slot(rank, at.group, want, latency, bus);
+    if (c == kNever) {  // beyond the horizon: the bus's overflow tail serves it in arrival order
+      c = want;
+      ++overflows_;
+    } else {
+      book_column(rank, at.group, c);
+    }
     const transport::Booking data = bus.book(c + latency, column);
-    result.queued += data.first - (c + latency);
+    result.queued += data.first - (want + latency);
     c = data.first - latency;
-    rank.last_col = c;
-    rank.last_col_group = at.group;
     if (write) {
       ++k.writes;
-      rank.write_data_end = later(rank.write_data_end, data.end());
+      rank.last_write = c;
+      rank.write_data_end = data.end();
       bank.next_pre = later(bank.next_pre, data.end() + timing_.wr);
     } else {
       ++k.reads;

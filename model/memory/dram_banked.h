@@ -5,12 +5,17 @@
 // reservation calendar shared with nothing else, as in the channel model.
 //
 // Loosely timed like the rest of the project: nothing ticks. Per request the command times
-// follow from per-bank and per-rank state (the next cycle each constraint allows, the last
-// four ACTs for tFAW), and refreshes that fell due are applied lazily before it. Scheduling is
-// first come, first served in the order requests arrive (call order, which under temporal
-// decoupling is not quite time order): a request's commands are never placed before those of
-// an earlier one in the same rank. FR-FCFS over a bounded queue (row hits first) is not done
-// yet; docs/memory-system.md, "Banked DRAM".
+// follow from per-bank state (the next cycle each constraint allows) and per-rank calendars
+// (tlm/reservation_calendar.h): an ACT holds its rank's ACT calendar for tRRD_S and its bank
+// group's for tRRD_L, and one of four units of a tFAW calendar for tFAW; a column command
+// holds the rank's and the group's column calendars for tCCD_S and tCCD_L. A calendar, unlike
+// a "next allowed" time, lets a request that arrives late in call order but early in time
+// (temporal decoupling: another TM ran its quantum first) take an earlier gap, so LT stays
+// close to precise timing. A bank's own state (its open row, tRC, tRAS, tRP, tRTP, tWR) is
+// still kept in call order: a bank serves its requests first come, first served in the order
+// they arrive, and so does refresh, applied lazily when a request reaches a refresh that fell
+// due. FR-FCFS over a bounded queue (row hits first) is not done yet; docs/memory-system.md,
+// "Banked DRAM".
 //
 // The class is plain C++ (no SystemC): Dram owns one and calls it from b_transport.
 #pragma once
@@ -54,8 +59,12 @@ class BankedDram {
   // Serves one request of `bytes` at `addr` (channel `channel`, already chosen by the
   // caller's channel hash) arriving at cycle `t`; its data is booked on `bus`. `count`: add to
   // the statistics (sampled timing counts its detailed windows only).
-  Result access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t,
+  // `now`: global time, before which nothing can be requested any more.
+  Result access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t, Cycle now,
                 transport::ReservationCalendar& bus, bool count);
+  // Fidelity: command bookings beyond a calendar's horizon (placed without the rank-level
+  // constraints); must be 0.
+  uint64_t overflow_bookings() const;
 
   const ChannelCounters& channel(uint32_t c) const { return counters_[c]; }
   const stats::Group& stats() const { return stats_; }
@@ -74,19 +83,25 @@ class BankedDram {
     bool open = false;
     uint64_t row = 0;
     Cycle last_act = kNever;
-    Cycle next_act = 0;  // tRC after its ACT, tRP after its PRE, tRFC after a refresh
+    Cycle next_act = 0;  // tRC after its ACT, tRP after its PRE
     Cycle next_pre = 0;  // tRAS after its ACT, tRTP after a RD, tWR after write data
     Cycle next_col = 0;  // tRCD after its ACT
   };
+  // A command that holds its rank (or bank group) for a spacing: tRRD, tCCD. Capacity 1: an
+  // ACT at a books [a, a + spacing), so any two are at least the spacing apart, in any order.
+  using Calendar = transport::ReservationCalendar;
   struct Rank {
-    std::array<Cycle, 4> acts{kNever, kNever, kNever, kNever};  // the last four ACTs (tFAW)
-    uint32_t act_slot = 0;  // the oldest of them
-    Cycle last_act = kNever;
-    uint32_t last_act_group = 0;
-    Cycle last_col = kNever;
-    uint32_t last_col_group = 0;
-    Cycle write_data_end = 0;  // tWTR before a RD
+    Calendar acts, columns;             // tRRD_S, tCCD_S
+    std::vector<Calendar> group_acts;   // tRRD_L, per bank group
+    std::vector<Calendar> group_columns;  // tCCD_L, per bank group
+    Calendar window;                    // tFAW: 4 units, an ACT holds one for tFAW cycles
+    Cycle last_write = kNever;          // the latest WR command (call order)
+    Cycle write_data_end = 0;           // its data's end: tWTR before a later RD
     Cycle next_refresh = 0;
+    // The latest refresh: no ACT in [from, to). An interval, not a "next ACT" time, so a
+    // request that arrives after it in call order but is earlier in time still goes before it.
+    Cycle refresh_from = 0, refresh_to = 0;
+    Rank(uint32_t groups, uint32_t horizon);
   };
   struct Channel {
     std::vector<Bank> banks;  // ranks x groups x banks_per_group
@@ -94,13 +109,20 @@ class BankedDram {
   };
 
   void refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelCounters& k);
-  Cycle earliest_act(const Channel& ch, const Location& at, Cycle from) const;
+  // The first cycle >= from at which the rank's calendars allow an ACT of bank group `group`,
+  // and its booking. kNever: beyond a calendar's horizon (the caller then ignores them).
+  Cycle act_slot(const Rank& r, uint32_t group, Cycle from) const;
+  void book_act(Rank& r, uint32_t group, Cycle at);
+  // The same for a column command whose data starts `lead` cycles after it on `bus`.
+  Cycle column_slot(const Rank& r, uint32_t group, Cycle from, Cycle lead, const Calendar& bus) const;
+  void book_column(Rank& r, uint32_t group, Cycle at);
 
   DramConfig config_;
   DramTiming timing_;
   uint32_t interleave_shift_ = 0, column_shift_ = 0, bank_bits_ = 0;
   std::vector<Channel> channels_;
   std::vector<ChannelCounters> counters_;  // never resized: the statistics point into it
+  uint64_t overflows_ = 0;
   stats::Group stats_;
   std::vector<std::unique_ptr<stats::Group>> channel_stats_;
 };

@@ -207,6 +207,24 @@ TEST(DramBanked, RandomTrafficCountsAddUpAndRefreshKeepsPace) {
   EXPECT_EQ(dram.overflow_bookings(), 0u);
 }
 
+// Temporal decoupling: a TM that ran ahead sends its request first. A request that arrives
+// later in call order but is earlier in time takes the earlier gap in the rank's calendars and
+// goes before a refresh that its predecessor triggered, instead of queueing behind both.
+TEST(DramBanked, AnEarlierRequestArrivingLaterIsNotQueuedBehindLaterOnes) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent late, early, before_refresh;
+  Script s("script", [&] {
+    late = read32(rig.port, 1 * kBank, kRefi + 50);  // refresh at 1900..2010, then ACT 2010
+    early = read32(rig.port, 2 * kBank, 500);        // another bank: ACT at 500
+    before_refresh = read32(rig.port, 3 * kBank, kRefi - 100);  // ACT at 1800, before the refresh
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(late.done, kRefi + kRfc + kRcd + kCl + kBurst);
+  EXPECT_EQ(early.done, 500 + kRcd + kCl + kBurst);
+  EXPECT_EQ(before_refresh.done, kRefi - 100 + kRcd + kCl + kBurst);
+}
+
 TEST(DramBanked, AddressMapHashesBanksAndSpreadsTreeletAlignedRows) {
   REQUIRE_FRESH_SYSTEMC();
   DramConfig c = one_channel();
