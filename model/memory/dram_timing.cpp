@@ -42,6 +42,10 @@ void DramTimingConfig::validate(uint32_t channel_bytes_per_cycle) const {
   need_pow2("ranks", ranks);
   need_pow2("bank_groups", bank_groups);
   need_pow2("banks_per_group", banks_per_group);
+  // Each rank keeps calendars per bank group (dram_banked.h): bounded, as devices are (DDR5:
+  // 2 ranks x 8 groups), so a hostile config cannot make thousands of them per channel.
+  if (ranks > 8) bad("ranks", "must be at most 8", ranks);
+  if (bank_groups > 16) bad("bank_groups", "must be at most 16", bank_groups);
   // In 64 bits: three large powers of two would wrap a 32-bit product to 0 and pass.
   const uint64_t banks = uint64_t{ranks} * bank_groups * banks_per_group;
   if (banks > 1024)

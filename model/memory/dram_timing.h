@@ -2,9 +2,10 @@
 // datasheets give them: times in nanoseconds, converted once to chip cycles (rounded up, as
 // a controller rounds a minimum time to whole clocks) by DramTiming::at(). The defaults are the
 // GDDR5 preset: 8 Gbit/s per pin, x32 devices, one device per channel, so 8 channels give
-// 8 x 32 GB/s = 256 GB/s, the STRaTA paper's DRAM bandwidth (docs/memory-system.md, "Banked
-// DRAM", lists the source of every value). validate() checks the rules the standard sets
-// between them (tRC >= tRAS + tRP, ...) and names the field that breaks one.
+// 8 x 32 GB/s = 256 GB/s, the STRaTA paper's DRAM bandwidth. docs/memory-system.md ("Banked
+// DRAM") gives where each value comes from, and says which are not yet checked against a
+// datasheet's AC table. validate() checks the rules the standard sets between them
+// (tRC >= tRAS + tRP, ...) and names the field that breaks one.
 #pragma once
 
 #include <cstdint>

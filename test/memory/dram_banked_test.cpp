@@ -263,8 +263,15 @@ TEST(DramBanked, InconsistentTimingsAreRefusedNamingTheField) {
       {[](DramTimingConfig& t) { t.bank_groups = 3; }, "dram.banked.bank_groups: must be a power of two"},
       {[](DramTimingConfig& t) { t.column_bytes = 16; }, "dram.banked.column_bytes: must be a whole number of cycles"},
       {[](DramTimingConfig& t) { t.row_bytes = 16; }, "dram.banked.row_bytes: must hold at least one column"},
-      // 2^31 x 4 x 4 banks: a 32-bit product wraps to 0.
-      {[](DramTimingConfig& t) { t.ranks = 1u << 31; }, "dram.banked.banks_per_group: ranks x bank_groups x banks_per_group"},
+      {[](DramTimingConfig& t) { t.ranks = 16; }, "dram.banked.ranks: must be at most 8"},
+      {[](DramTimingConfig& t) { t.bank_groups = 32; }, "dram.banked.bank_groups: must be at most 16"},
+      // 8 x 16 x 2^28 banks: a 32-bit product wraps to 0.
+      {[](DramTimingConfig& t) {
+         t.ranks = 8;
+         t.bank_groups = 16;
+         t.banks_per_group = 1u << 28;
+       },
+       "dram.banked.banks_per_group: ranks x bank_groups x banks_per_group"},
   };
   for (const auto& c : cases) {
     DramConfig config;
