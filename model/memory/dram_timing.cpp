@@ -1,5 +1,6 @@
 #include "model/memory/dram_timing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -105,6 +106,9 @@ DramTiming DramTiming::at(const DramTimingConfig& c, double clock_ghz, uint32_t 
   t.refi = cycles(c.t_refi_ns, clock_ghz);
   t.rfc = cycles(c.t_rfc_ns, clock_ghz);
   t.controller = cycles(c.controller_ns, clock_ghz);
+  // Rounding can make tREFI 0 cycles or no longer than tRFC at a slow clock: refreshes would
+  // then never end (BankedDram would loop). One cycle of each interval stays usable.
+  t.refi = std::max(t.refi, t.rfc + 1);
   t.burst = channel_bytes_per_cycle == 0 ? 1 : (c.column_bytes + channel_bytes_per_cycle - 1) / channel_bytes_per_cycle;
   return t;
 }

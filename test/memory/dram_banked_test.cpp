@@ -249,6 +249,19 @@ TEST(DramBanked, ThePresetPassesTheRulesAndGives256GBPerSecond) {
   EXPECT_EQ(c.bytes_per_cycle, 256u);
 }
 
+// At a slow clock both round up to one cycle; a refresh must still leave time between them.
+TEST(DramBanked, RoundingKeepsTheRefreshIntervalLongerThanTheRefresh) {
+  DramTimingConfig t;
+  t.t_rfc_ns = 110.0;
+  t.t_refi_ns = 110.5;
+  const DramTiming slow = DramTiming::at(t, 0.001, 32);
+  EXPECT_EQ(slow.rfc, 1u);
+  EXPECT_EQ(slow.refi, 2u);
+  const DramTiming fast = DramTiming::at(DramTimingConfig{}, 1.0, 32);
+  EXPECT_EQ(fast.refi, 1900u);
+  EXPECT_EQ(fast.rrd_s, 6u);  // 5.5 ns rounds up
+}
+
 TEST(DramBanked, InconsistentTimingsAreRefusedNamingTheField) {
   const struct {
     void (*change)(DramTimingConfig&);
