@@ -191,6 +191,37 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   rank.group_acts[at.group].retire_before(now);
   rank.group_columns[at.group].retire_before(now);
 
+  // An ACT at or after `from`, by the rank's calendars, outside the latest refresh.
+  auto place_act = [&](Cycle from) {
+    Cycle a = act_slot(rank, at.group, from);
+    if (a != kNever && a >= rank.refresh_from && a < rank.refresh_to) a = act_slot(rank, at.group, rank.refresh_to);
+    if (a == kNever) {  // beyond the horizon: without the rank's constraints
+      a = from < rank.refresh_from || from >= rank.refresh_to ? from : rank.refresh_to;
+      ++overflows_;
+    }
+    return a;
+  };
+
+  // A request earlier in time than its bank's latest ACT arrived late in call order (its TM
+  // ran behind). If a whole row cycle of its own (ACT, columns, PRE) fits before that ACT, it
+  // is served there as a miss and leaves the bank's state, which is later, alone; else it
+  // queues behind, first come, first served.
+  if (bank.last_act != kNever && arrive + timing_.rc <= bank.last_act) {
+    const Cycle act = place_act(arrive);
+    if (act + timing_.rc <= bank.last_act) {
+      ++k.row_misses;
+      ++k.activates;
+      ++k.precharges;
+      book_act(rank, at.group, act);
+      const Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
+      if (!write) {
+        ++k.read_requests;
+        k.read_latency_cycles += r.end - t;
+      }
+      return r;
+    }
+  }
+
   // The request's first command (PRE, ACT, or its first column command on a row hit) must
   // come before the rank's next refresh; else the refresh goes first and the plan is redone.
   bool hit = false, conflict = false;
@@ -207,13 +238,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
       pre = conflict ? later(arrive, bank.next_pre) : 0;
       Cycle from = later(conflict ? pre + timing_.rp : arrive, bank.next_act);
       if (bank.last_act != kNever) from = later(from, bank.last_act + timing_.rc);
-      act = act_slot(rank, at.group, from);
-      if (act != kNever && act >= rank.refresh_from && act < rank.refresh_to)  // not during a refresh
-        act = act_slot(rank, at.group, rank.refresh_to);
-      if (act == kNever) {  // beyond the horizon: without the rank's constraints
-        act = from < rank.refresh_from || from >= rank.refresh_to ? from : rank.refresh_to;
-        ++overflows_;
-      }
+      act = place_act(from);
       col_ready = act + timing_.rcd;
       first = conflict ? pre : act;
     }
@@ -240,39 +265,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     book_act(rank, at.group, act);
   }
 
-  // Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a
-  // write) allow, then as early as the data bus has room: a busy bus delays the command.
-  const uint32_t column = config_.banked.column_bytes;
-  const uint32_t columns = std::max<uint32_t>(1, (bytes + column - 1) / column);
-  const Cycle latency = write ? timing_.cwl : timing_.cl;
-  Result result;
-  for (uint32_t i = 0; i < columns; ++i) {
-    Cycle want = col_ready;
-    // tWTR: a read after (in call order) a write whose command it would follow.
-    if (!write && rank.last_write != kNever && want >= rank.last_write)
-      want = later(want, rank.write_data_end + timing_.wtr);
-    Cycle c = column_slot(rank, at.group, want, latency, bus);
-    if (c == kNever) {  // beyond the horizon: the bus's overflow tail serves it in arrival order
-      c = want;
-      ++overflows_;
-    } else {
-      book_column(rank, at.group, c);
-    }
-    const transport::Booking data = bus.book(c + latency, column);
-    result.queued += data.first - (want + latency);
-    c = data.first - latency;
-    if (write) {
-      ++k.writes;
-      rank.last_write = c;
-      rank.write_data_end = data.end();
-      bank.next_pre = later(bank.next_pre, data.end() + timing_.wr);
-    } else {
-      ++k.reads;
-      bank.next_pre = later(bank.next_pre, c + timing_.rtp);
-    }
-    col_ready = c;
-    result.end = later(result.end, data.end());
-  }
+  const Result result = issue_columns(rank, &bank, at.group, col_ready, bytes, write, bus, k);
 
   if (config_.banked.row_policy == RowPolicy::kClosed) {  // auto-precharge after the last column
     ++k.precharges;
@@ -282,6 +275,45 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   if (!write) {
     ++k.read_requests;
     k.read_latency_cycles += result.end - t;
+  }
+  return result;
+}
+
+// Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a
+// write) allow, then as early as the data bus has room: a busy bus delays the command. `bank`
+// (null: a request served before the bank's later state) learns its tRTP and tWR limits.
+BankedDram::Result BankedDram::issue_columns(Rank& rank, Bank* bank, uint32_t group, Cycle col_ready, uint32_t bytes,
+                                             bool write, transport::ReservationCalendar& bus, ChannelCounters& k) {
+  const uint32_t column = config_.banked.column_bytes;
+  const uint32_t columns = std::max<uint32_t>(1, (bytes + column - 1) / column);
+  const Cycle latency = write ? timing_.cwl : timing_.cl;
+  Result result;
+  for (uint32_t i = 0; i < columns; ++i) {
+    Cycle want = col_ready;
+    // tWTR: a read after (in call order) a write whose command it would follow.
+    if (!write && rank.last_write != kNever && want >= rank.last_write)
+      want = later(want, rank.write_data_end + timing_.wtr);
+    Cycle c = column_slot(rank, group, want, latency, bus);
+    if (c == kNever) {  // beyond the horizon: the bus's overflow tail serves it in arrival order
+      c = want;
+      ++overflows_;
+    } else {
+      book_column(rank, group, c);
+    }
+    const transport::Booking data = bus.book(c + latency, column);
+    result.queued += data.first - (want + latency);
+    c = data.first - latency;
+    if (write) {
+      ++k.writes;
+      rank.last_write = c;
+      rank.write_data_end = data.end();
+      if (bank != nullptr) bank->next_pre = later(bank->next_pre, data.end() + timing_.wr);
+    } else {
+      ++k.reads;
+      if (bank != nullptr) bank->next_pre = later(bank->next_pre, c + timing_.rtp);
+    }
+    col_ready = c;
+    result.end = later(result.end, data.end());
   }
   return result;
 }

@@ -12,9 +12,10 @@
 // a "next allowed" time, lets a request that arrives late in call order but early in time
 // (temporal decoupling: another TM ran its quantum first) take an earlier gap, so LT stays
 // close to precise timing. A bank's own state (its open row, tRC, tRAS, tRP, tRTP, tWR) is
-// still kept in call order: a bank serves its requests first come, first served in the order
-// they arrive, and so does refresh, applied lazily when a request reaches a refresh that fell
-// due. FR-FCFS over a bounded queue (row hits first) is not done yet; docs/memory-system.md,
+// kept in call order: a bank serves its requests first come, first served in the order they
+// arrive, except that a request earlier in time than the bank's latest ACT, whose own row
+// cycle fits before it, is served there without touching that state. Refresh is applied
+// lazily when a request reaches a refresh that fell due. FR-FCFS over a bounded queue (row hits first) is not done yet; docs/memory-system.md,
 // "Banked DRAM".
 //
 // The class is plain C++ (no SystemC): Dram owns one and calls it from b_transport.
@@ -116,6 +117,8 @@ class BankedDram {
   // The same for a column command whose data starts `lead` cycles after it on `bus`.
   Cycle column_slot(const Rank& r, uint32_t group, Cycle from, Cycle lead, const Calendar& bus) const;
   void book_column(Rank& r, uint32_t group, Cycle at);
+  Result issue_columns(Rank& rank, Bank* bank, uint32_t group, Cycle col_ready, uint32_t bytes, bool write,
+                       transport::ReservationCalendar& bus, ChannelCounters& k);
 
   DramConfig config_;
   DramTiming timing_;

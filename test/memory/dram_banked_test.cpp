@@ -225,6 +225,29 @@ TEST(DramBanked, AnEarlierRequestArrivingLaterIsNotQueuedBehindLaterOnes) {
   EXPECT_EQ(before_refresh.done, kRefi - 100 + kRcd + kCl + kBurst);
 }
 
+// The same within one bank: a request whose whole row cycle (tRC) fits before the bank's
+// later ACT is served there, as a miss, and the bank's later state (its open row) stays.
+TEST(DramBanked, AnEarlierRequestToABankUsedLaterIsServedBeforeIt) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());
+  Sent later_one, earlier, too_close, hit;
+  Script s("script", [&] {
+    later_one = read32(rig.port, 0, 500);      // bank 0, row 0: ACT 500
+    earlier = read32(rig.port, kRow, 100);     // bank 0, row 1, at 100: ACT 100, done by 146 < 500
+    too_close = read32(rig.port, 2 * kRow, 480);  // 480 + tRC > 500: queues behind (a conflict)
+    hit = read32(rig.port, 2 * kRow + 32, 700);   // row 2 is open now
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(later_one.done, 500 + kRcd + kCl + kBurst);
+  EXPECT_EQ(earlier.done, 100 + kRcd + kCl + kBurst);
+  // PRE at 500 + tRAS = 532, ACT at 546 (= 500 + tRC).
+  EXPECT_EQ(too_close.done, 500 + kRc + kRcd + kCl + kBurst);
+  EXPECT_EQ(hit.done, 700 + kCl + kBurst);
+  EXPECT_EQ(rig.k().row_misses, 2u);
+  EXPECT_EQ(rig.k().row_conflicts, 1u);
+  EXPECT_EQ(rig.k().row_hits, 1u);
+}
+
 TEST(DramBanked, AddressMapHashesBanksAndSpreadsTreeletAlignedRows) {
   REQUIRE_FRESH_SYSTEMC();
   DramConfig c = one_channel();
