@@ -27,6 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case StopReason::kTrap:
     case StopReason::kHookError:
     case StopReason::kYield:
+    case StopReason::kDeferred:
       break;
     default:
       std::abort();

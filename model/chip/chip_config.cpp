@@ -124,6 +124,8 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   check(t.sample_warmup_cycles != d.sample_warmup_cycles, "timing.sample_warmup_cycles");
   check(t.functional_warming != d.functional_warming, "timing.functional_warming");
   check(t.fast_forward_batch_quanta != d.fast_forward_batch_quanta, "timing.fast_forward_batch_quanta");
+  check(t.fast_forward_time_order != d.fast_forward_time_order, "timing.fast_forward_time_order");
+  check(t.fast_forward_op_classes != d.fast_forward_op_classes, "timing.fast_forward_op_classes");
   check(t.sample_target_error != d.sample_target_error, "timing.sample_target_error");
   check(t.sample_target_stats != d.sample_target_stats, "timing.sample_target_stats");
   return out;
@@ -170,6 +172,8 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
   b.bind("timing.functional_warming", &timing.functional_warming);
   b.bind("timing.fast_forward_batch_quanta", &timing.fast_forward_batch_quanta);
+  b.bind("timing.fast_forward_time_order", &timing.fast_forward_time_order);
+  b.bind("timing.fast_forward_op_classes", &timing.fast_forward_op_classes);
   b.bind("timing.sample_target_error", &timing.sample_target_error);
   b.bind("timing.sample_target_stats", &timing.sample_target_stats);
 

@@ -90,6 +90,18 @@ struct TimingConfig {
   // It was a fixed 4 until measured: 16 is as accurate against LT on 18 frames and 14-19%
   // faster (docs/sampled-timing.md, "Fast-forward batch length").
   uint32_t fast_forward_batch_quanta = 16;
+  // Sampled: a fast-forwarded TP's stream and global-register operations wait, as in LT with
+  // sync_shared_ops, until global time reaches the cycle the measured rates date them at, so
+  // the ray buffers and treelet assignments change in time order through the whole frame.
+  // Off, they change in arrival order (a TM up to the batch length ahead): faster, but the
+  // buffers then hold more rays per treelet than LT's, the detailed windows inherit them, and
+  // STRaTA's L1 misses, L2 accesses and DRAM bytes come out low (docs/sampled-timing.md,
+  // "The fast-forward's ray schedule").
+  bool fast_forward_time_order = true;
+  // Sampled: charge a fast-forwarded stream or global-register op the mean latency measured for
+  // its kind of outcome (assign found/none, pop ray/empty, push stored/full, global), not the
+  // mean over all of them (tm_sampler.h, OpClass).
+  bool fast_forward_op_classes = true;
   // Sampled: 0, or the relative half-width (e.g. 0.02) the 95% intervals of the statistics
   // sample_target_stats names should reach; the sampler then chooses the period itself
   // (window_sampler.h).

@@ -403,10 +403,10 @@ std::string FrameReport::treelet_lines(const std::string& ci) const {
               f.number("mean"), share(f.number("mean")), ull(f.count("capacity")), f.number("steady_state"),
               share(f.number("steady_state")), ull(f.count("steady_end_cycle")), b.number("nonempty_mean"),
               b.number("rays_per_nonempty_mean"), to_string(chip_.config().timing.mode));
-  if (chip_.config().timing.mode == transport::TimingMode::kSampled)
-    s += "note           the sessions are every session of the sampled execution, whose fast-forward changes the ray "
-         "schedule (fewer, longer sessions than LT): read sessions and rays per session from LT "
-         "(docs/sampled-timing.md, \"Treelet sessions\")\n";
+  if (chip_.config().timing.mode == transport::TimingMode::kSampled && !chip_.config().timing.fast_forward_time_order)
+    s += "note           the sessions are every session of the sampled execution, whose fast-forward in arrival order "
+         "(timing.fast_forward_time_order=false) changes the ray schedule (fewer, longer sessions than LT): read "
+         "sessions and rays per session from LT (docs/sampled-timing.md, \"Treelet sessions\")\n";
   return s;
 }
 

@@ -35,6 +35,8 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
   access_gp_.set_extension(access_ext_);
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
+  ff_time_order_ = sampler_.enabled() && config_.timing.fast_forward_time_order;
+  sampler_.set_op_classes(config_.timing.fast_forward_op_classes);
   warm_log_.line_shift = 0;
   while ((1u << warm_log_.line_shift) < config_.l1d.line_bytes) ++warm_log_.line_shift;
   if (warming_) {
@@ -170,6 +172,7 @@ void ThreadMultiprocessor::run() {
         const Cycle next_window = sampler_.next_window(window);
         const Cycle ahead = Cycle{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles;
         const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
+        ff_others_ = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());
         } else {
@@ -335,7 +338,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
     if (hook_timed_) {
       ready = std::max(ready, hook_ready_);
-      if (sampler_.measuring()) sampler_.note_wait(ready - earliest);
+      if (sampler_.measuring()) sampler_.note_wait(ready - earliest, op_class_);
     }
     tp.timing.complete_memory(decoded, earliest, ready);
   } else {
@@ -388,7 +391,8 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
       if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
       ++env_.globals->operations;
       ++counters_.global_register_ops;
-      if (sampler_.in_batch()) sampler_.note_batch_wait();
+      op_class_ = TmSampler::kGlobal;
+      if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
       hook_timed_ = true;
       hook_ready_ = request_cycle_ + config_.global_register_latency_cycles;
       return result;
@@ -429,7 +433,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
     ++counters_.stream_moves_all;
     if (counting()) ++counters_.stream_moves;
   }
-  if (sampler_.in_batch()) sampler_.note_batch_wait();
+  op_class_ = TmSampler::kOtherOp;
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
       hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,
@@ -443,12 +447,14 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
                              call.rs2, tp, &ext);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
+      op_class_ = result.dest[0] ? TmSampler::kPushStored : TmSampler::kPushFull;
       break;
     case iss::Op::kStStreamPop:
     case iss::Op::kStStreamPop64:
       hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, request_cycle_, false,
                              transport::kNoTreelet, tp, &ext);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
+      op_class_ = result.dest[0] ? TmSampler::kPopRay : TmSampler::kPopEmpty;
       if (result.dest[0]) {
         std::memcpy(call.out, scratch, ray_bytes);
         result.status = iss::HookStatus::kStore;
@@ -460,10 +466,12 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
                              transport::kNoTreelet, tp, &ext);
       result.dest[0] = ext.result;
       sessions_.assigned(ext.result);
+      op_class_ = ext.result == transport::kNoTreelet ? TmSampler::kAssignNone : TmSampler::kAssignFound;
       if (trace_.enabled())
         trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), global_cycle_);
       break;
   }
+  if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
   hook_timed_ = true;
   return result;
 }

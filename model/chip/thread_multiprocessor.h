@@ -163,6 +163,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   void refresh_stats();
 
   iss::HookResult execute(const iss::HookCall& call) override;
+  bool in_time_order();  // fast-forward, time order: false when the op must be deferred
   iss::HookResult execute_op(const iss::HookCall& call);
   iss::HookResult execute_stream(const iss::HookCall& call);
 
@@ -198,6 +199,13 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   WarmLog warm_log_;   // the current fast-forward batch's L1 lines (functional warming)
   bool warming_ = false;
   bool l1_timed_since_warming_ = true;  // a timed access changed the L1: warm_log_.forget()
+  // timing.fast_forward_time_order: a batch's stream and global-register ops wait for global
+  // time to reach their date, and one dated past `ff_others_` (the earliest next cycle of the
+  // TM's other TPs) is deferred: the batch stops before it, and the TP resumes there when it
+  // is the TM's earliest (tm_fast_forward.cpp).
+  bool ff_time_order_ = false;
+  unsigned op_class_ = 0;  // TmSampler::OpClass of the stream/global op just executed
+  transport::Cycle ff_others_ = 0;
 
   // The instruction being executed, for the hook.
   Tp* current_ = nullptr;

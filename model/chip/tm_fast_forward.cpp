@@ -10,6 +10,18 @@ namespace strata::chip {
 using transport::AccessClass;
 using transport::Cycle;
 
+namespace {
+iss::HookResult deferred() {
+  iss::HookResult r;
+  r.status = iss::HookStatus::kDefer;
+  return r;
+}
+bool shared_op(iss::Op op) {
+  const iss::InstrClass c = iss::op_info(op).cls;
+  return c == iss::InstrClass::kStrataStream || c == iss::InstrClass::kStrataGlobal;
+}
+}  // namespace
+
 bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   const Cycle start = tp.timing.next_issue();
   sync_to(start);
@@ -43,7 +55,8 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
 
   tp.forwarded = true;
   if (!error_.empty()) return false;
-  if (r.reason != iss::StopReason::kInstructionLimit && r.reason != iss::StopReason::kYield) {
+  if (r.reason != iss::StopReason::kInstructionLimit && r.reason != iss::StopReason::kYield &&
+      r.reason != iss::StopReason::kDeferred) {
     if (!r.ok()) fail(tp, "firmware stopped: " + iss::describe(r));
     return false;
   }
@@ -67,15 +80,28 @@ void ThreadMultiprocessor::replay_warm_log(const Tp& tp) {
   }
 }
 
+bool ThreadMultiprocessor::in_time_order() {
+  // As in LT with sync_shared_ops: global time catches up with the op's date first. An op
+  // dated past another TP of this TM must wait for that TP, which the TM runs first: the op is
+  // deferred (the batch stops before it, and fast_forward() sets the TP's next issue to its
+  // date), so the TM's own TPs reach shared state in time order too.
+  if (request_cycle_ > ff_others_) return false;
+  sync_to(request_cycle_, ff_others_, true);
+  return true;
+}
+
 iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   // Fast-forward: the op is dated as fast_forward() will charge the batch, and the batch stops
   // once its time passes its end (a TP spinning on stream operations would overshoot).
   // One named result and one return, so that execute_op builds it in the caller's slot: with
   // a second return the result was copied out of a temporary with wide loads of narrow,
   // just-written stores, a store-forwarding stall per STRaTA op (about 4% of a fast-forward).
+  // With timing.fast_forward_time_order, an op on shared state (stream memory, global
+  // registers) first waits for its turn in time order (in_time_order()), or is deferred.
   const bool batch = sampler_.in_batch();
   if (batch) request_cycle_ = sampler_.batch_cycle(call.retired_in_run);
-  iss::HookResult result = execute_op(call);
+  iss::HookResult result =
+      batch && ff_time_order_ && shared_op(call.op) && !in_time_order() ? deferred() : execute_op(call);
   if (batch) result.yield = sampler_.batch_done_after(call.retired_in_run);
   return result;
 }

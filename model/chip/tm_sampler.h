@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 #include "model/chip/chip_config.h"
@@ -25,6 +26,14 @@ class TmSampler {
         warmup_(t.sample_warmup_cycles),
         default_wait_(global_register_latency) {}
 
+  // What a stream or global-register operation did. With timing.fast_forward_op_classes a
+  // fast-forwarded op is charged the mean latency the last measured window showed for its kind
+  // of outcome: in LT the retry loop of a TP without a ray (an assign that finds nothing, or a
+  // pop that finds the buffer empty) is several times slower than a pop or push that moves a
+  // ray (128 TMs: 100-300 cycles against about 50), and charging every op the mean of all of
+  // them ran that loop too fast, so hungry TMs re-picked the fullest buffer too often.
+  enum OpClass : unsigned { kAssignFound, kAssignNone, kPopRay, kPopEmpty, kPushStored, kPushFull, kGlobal, kOtherOp, kOpClasses };
+  void set_op_classes(bool on) { by_class_ = on; }
   bool enabled() const { return enabled_; }
   Cycle window_of(Cycle t) const { return schedule_->window_of(t); }  // first cycle of t's period
   Cycle next_window(Cycle window) const { return schedule_->next_window(window); }
@@ -38,6 +47,8 @@ class TmSampler {
     if (window > measure_window_) {
       measure_window_ = window;
       measured_ = measured_waits_ = measured_wait_cycles_ = 0;
+      class_waits_.fill(0);
+      class_wait_cycles_.fill(0);
     }
     measuring_ = window == measure_window_ && t - window >= warmup_;
     if (measuring_) ++measured_;
@@ -49,9 +60,11 @@ class TmSampler {
   // only the measured parts in it.
   bool counting() const { return !enabled_ || measuring_; }
   // A measured stream or global-register operation took `cycles` from request to answer.
-  void note_wait(Cycle cycles) {
+  void note_wait(Cycle cycles, unsigned cls) {
     ++measured_waits_;
     measured_wait_cycles_ += cycles;
+    ++class_waits_[cls];
+    class_wait_cycles_[cls] += cycles;
   }
 
   // Updates the fast-forward rates from the measured part of `window` (once per stretch).
@@ -73,6 +86,8 @@ class TmSampler {
     cpi_ = tp_cycles / issued;
     wait_cycles_ = waits > 0 ? wait_cycles / waits : double(default_wait_);
     compute_cpi_ = std::max(1.0, (tp_cycles - wait_cycles) / std::max(1.0, issued - waits));
+    for (unsigned c = 0; c < kOpClasses; ++c)
+      class_cycles_[c] = class_waits_[c] > 0 ? double(class_wait_cycles_[c]) / double(class_waits_[c]) : wait_cycles_;
   }
   double cpi() const { return cpi_; }  // cycles per instruction of one TP, on average
 
@@ -83,14 +98,18 @@ class TmSampler {
     batch_start_ = start;
     batch_until_ = until;
     batch_waits_ = 0;
+    batch_wait_cycles_ = 0.0;
   }
   void end_batch() { functional_ = false; }
   bool in_batch() const { return functional_; }
-  void note_batch_wait() { ++batch_waits_; }  // a stream or global-register operation in the batch
+  void note_batch_wait(unsigned cls) {  // a stream or global-register operation in the batch
+    ++batch_waits_;
+    batch_wait_cycles_ += by_class_ ? class_cycles_[cls] : wait_cycles_;
+  }
   uint64_t batch_waits() const { return batch_waits_; }
   // Cycles for `instructions`, of which `waits` stream/global operations.
   double charge(uint64_t instructions, uint64_t waits) const {
-    return double(instructions - waits) * compute_cpi_ + double(waits) * wait_cycles_;
+    return double(instructions - waits) * compute_cpi_ + batch_wait_cycles_;
   }
   // When the batch's `retired`-th instruction issues (for dating its STRaTA operations), and
   // whether the batch has reached its end after it.
@@ -100,6 +119,11 @@ class TmSampler {
   }
 
  private:
+  static std::array<double, kOpClasses> filled(double v) {
+    std::array<double, kOpClasses> a{};
+    a.fill(v);
+    return a;
+  }
   bool enabled_;
   const SamplingSchedule* schedule_;
   Cycle detail_, warmup_;
@@ -117,6 +141,10 @@ class TmSampler {
   double batch_start_ = 0.0;
   Cycle batch_until_ = 0;
   uint64_t batch_waits_ = 0;
+  double batch_wait_cycles_ = 0.0;
+  bool by_class_ = false;
+  std::array<uint64_t, kOpClasses> class_waits_{}, class_wait_cycles_{};
+  std::array<double, kOpClasses> class_cycles_ = filled(1.0);  // as wait_cycles_ until measured
 };
 
 }  // namespace strata::chip

@@ -14,7 +14,8 @@ TreeletSessions::TreeletSessions(uint32_t node_treelets)
              "from an assign that returned another treelet than the TM had (or its first) to the next such change; an "
              "assign that found every buffer empty ends none. Its rays are the pops from the TM's buffer meanwhile, "
              "its lines the L1 data lines the TM's loads filled meanwhile (model/chip/treelet_sessions.h). Sampled timing "
-             "counts every session of its execution, whose fast-forward changes the schedule: read sessions from LT.",
+             "counts every session of its execution, fast-forward included; in time order (the default) its schedule is "
+             "LT's within a few percent.",
              Basis::kExact) {
   register_stats();
 }

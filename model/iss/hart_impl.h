@@ -235,6 +235,9 @@ typename Hart<Memory>::Outcome Hart<Memory>::exec_strata(const Decoded& d, uint3
       stop.reason = StopReason::kHookError;
       stop.detail = r.message;
       return Outcome::kStop;
+    case HookStatus::kDefer:  // nothing happened: the run stops with pc on this op (goto stop)
+      stop.reason = StopReason::kDeferred;
+      return Outcome::kStop;
     case HookStatus::kStore: {
       const unsigned n = strata_mem_out_words(d.op);
       cause = cause::kStoreMisaligned;

@@ -15,6 +15,7 @@ const char* stop_reason_name(StopReason r) {
     case StopReason::kTrap: return "trap";
     case StopReason::kHookError: return "STRaTA hook error";
     case StopReason::kYield: return "yield";
+    case StopReason::kDeferred: return "deferred";
   }
   return "?";
 }
@@ -44,6 +45,10 @@ std::string describe(const RunResult& r) {
     case StopReason::kYield:
       std::snprintf(buf, sizeof buf, "yielded to the embedder after %llu instructions, next pc 0x%08x",
                     static_cast<unsigned long long>(r.executed), r.pc);
+      return buf;
+    case StopReason::kDeferred:
+      std::snprintf(buf, sizeof buf, "deferred by the embedder after %llu instructions, before pc 0x%08x%s",
+                    static_cast<unsigned long long>(r.executed), r.pc, insn.c_str());
       return buf;
   }
   return "?";

@@ -12,7 +12,9 @@ enum class StopReason : uint8_t {
   kHalt,              // strata.halt
   kTrap,              // an exception with no handler (mtvec == 0)
   kHookError,         // the STRaTA hook could not execute an operation
-  kYield              // the hook asked to end the run after this instruction; run() again to continue
+  kYield,             // the hook asked to end the run after this instruction; run() again to continue
+  kDeferred           // the hook asked to stop before this instruction, which did nothing: run() again
+                      // executes it (an embedder that must first let time pass, tm_fast_forward.cpp)
 };
 
 struct RunResult {

@@ -27,7 +27,9 @@ enum class HookStatus : uint8_t {
   kOk,       // write the destinations
   kStore,    // write the destinations, then store `out` to x[rs1]
   kIllegal,  // raise an illegal-instruction exception (message says why)
-  kFatal     // stop the run: the embedder cannot execute this (message says why)
+  kFatal,    // stop the run: the embedder cannot execute this (message says why)
+  kDefer     // not now: stop the run before this op, with no effect (StopReason::kDeferred); the
+             // next run() executes it again. The hook must not have changed any state.
 };
 
 struct HookResult {

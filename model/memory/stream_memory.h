@@ -92,6 +92,10 @@ class StreamMemory : public sc_core::sc_module {
   // Rays stored and taken over the whole frame, fast-forward included: the rays fix them, so
   // they are exact in every timing mode. Only refused pushes and empty pops depend on timing.
   uint64_t rays_pushed_ = 0, rays_popped_ = 0;
+  // Pushes, pops, size queries and assignments dated before one already served: the ray
+  // schedule changed out of time order (whole frame, fast-forward included; a fidelity check).
+  uint64_t schedule_ops_out_of_order_ = 0;
+  transport::Cycle latest_schedule_op_ = 0;
   StreamOccupancy occupancy_;  // every push and pop, fast-forward included: levels are never scaled
   stats::Group stats_;
   std::unique_ptr<DataTrafficStats> by_data_stats_;

@@ -219,7 +219,10 @@ TEST_P(SampledTiming, ATargetOnDramBytesTimesMoreThanOneOnCyclesAlone) {
   EXPECT_GT(relative(cycles, "/memory/dram/bytes"), 2 * relative(cycles, "/frame/cycles"));
   EXPECT_GT(dram["sampling"]["timed_instructions"].get<double>(),
             1.5 * cycles["sampling"]["timed_instructions"].get<double>());
-  EXPECT_LT(relative(dram, "/memory/dram/bytes"), relative(cycles, "/memory/dram/bytes"));
+  // Not asserted: that the DRAM interval narrows. Most of this frame's DRAM traffic is its
+  // cold start, inside one window, and no number of windows narrows that (trax, measured
+  // 2026-12-06: 0.79-0.92 at 40 and at 345 windows, in either fast-forward order);
+  // docs/sampled-timing.md, "STRaTA's memory bias", the cold start.
   // Per named statistic: stats.json's intervals.target, and a line of the summary.
   const auto& t = dram["intervals"]["target"];
   EXPECT_EQ(t["error"], 0.1);
@@ -270,12 +273,16 @@ TEST(SampledTimingTargets, ABadStatisticNameIsRefusedWithTheFieldNamed) {
 // runner-up (quanta of 500 cycles here). Longer batches switch TPs less often (the cost that
 // knob trades); they compute the same rays, and the frame estimate stays where the shorter
 // batches put it.
+// For the STRaTA designs this holds in arrival order: in time order (the default) a batch
+// mostly ends at its first stream operation dated past the TM's runner-up, whatever its length
+// (strata-pipelines here: 19,916 batches of 1 quantum, 23,899 of 4).
 TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
   TempDir dir;
+  const std::string order = std::string(GetParam()) == "trax" ? "" : " --set timing.fast_forward_time_order=false";
   const nlohmann::json short_batches =
-      run_frame(dir, GetParam(), "sampled", "-short", " --set timing.fast_forward_batch_quanta=1");
+      run_frame(dir, GetParam(), "sampled", "-short", " --set timing.fast_forward_batch_quanta=1" + order);
   const nlohmann::json long_batches =
-      run_frame(dir, GetParam(), "sampled", "-long", " --set timing.fast_forward_batch_quanta=4");
+      run_frame(dir, GetParam(), "sampled", "-long", " --set timing.fast_forward_batch_quanta=4" + order);
   ASSERT_FALSE(short_batches.is_null() || long_batches.is_null());
   const auto& ss = short_batches["sampling"];
   const auto& ls = long_batches["sampling"];
@@ -287,6 +294,35 @@ TEST_P(SampledTiming, LongerFastForwardBatchesSwitchTpsLessOften) {
   EXPECT_LT(ls["fast_forward_batches"].get<double>(), 0.5 * ss["fast_forward_batches"].get<double>());
   const double short_cycles = short_batches["frame"]["cycles"].get<double>();
   EXPECT_NEAR(long_batches["frame"]["cycles"].get<double>() / short_cycles, 1.0, 0.10);
+}
+
+// Issue 35: the fast-forward ran each TP in batches of up to 16 quanta, so its stream
+// operations changed the ray buffers in arrival order; the buffers then held more rays per
+// treelet than LT's, the detailed windows inherited them, and STRaTA's L2 accesses and DRAM
+// bytes came out 12-33% low (Sibenik 256x256 and 512x512). In time order (the default) the
+// pushes, pops and assignments reach the stream memory in date order, as in LT. Neither LT nor
+// precise timing is strictly in order (on this frame about 1 in 1,000 ops is dated before one
+// already served: 39 in LT, 60 in precise), so the test asks for LT's level, not for 0.
+TEST(SampledTimingOrder, TheFastForwardChangesTheRayBuffersInTimeOrder) {
+  TempDir dir;
+  const char* design = "strata-pipelines";
+  const nlohmann::json lt = run_frame(dir, design, "lt");
+  const nlohmann::json ordered = run_frame(dir, design, "sampled");
+  const nlohmann::json arrival =
+      run_frame(dir, design, "sampled", "-arrival", " --set timing.fast_forward_time_order=false");
+  ASSERT_FALSE(lt.is_null() || ordered.is_null() || arrival.is_null());
+  // The share of the frame's stream accesses dated before one already served.
+  const auto late = [](const nlohmann::json& r) {
+    const auto& s = r["memory"]["stream"];
+    return s["schedule_ops_out_of_order"].get<double>() / s["accesses"].get<double>();
+  };
+  EXPECT_LT(late(lt), 0.01);
+  EXPECT_LT(late(ordered), 0.01);
+  EXPECT_GT(late(arrival), 0.10);  // 45% on this frame
+  EXPECT_GT(ordered["sampling"]["fast_forward_instructions"].get<double>(),
+            0.2 * ordered["instructions"]["retired"].get<double>());
+  EXPECT_EQ(ordered["rays"], lt["rays"]);  // and both equal the twin's (--check)
+  EXPECT_EQ(arrival["rays"], lt["rays"]);
 }
 
 // Issue 39, F1: with a period longer than the frame (3.1 M cycles here), the frame ends before

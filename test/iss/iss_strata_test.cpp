@@ -204,6 +204,41 @@ TEST(IssStrata, HookRefusalsAndMissingHook) {
   EXPECT_EQ(halt_only.run().reason, StopReason::kHalt);
 }
 
+TEST(IssStrata, ADeferredOperationStopsBeforeItselfAndRunsOnTheNextRun) {
+  // Sampled timing's time-ordered fast-forward defers a stream op that must wait for another
+  // TP (tm_fast_forward.cpp): the run stops on it with nothing done, and the next run starts
+  // with it.
+  RecordingHook hook;
+  hook.result.status = HookStatus::kDefer;
+  hook.result.dest[0] = 77;  // must not be written while deferring
+  const uint32_t pop = strata(T, STRATA_F3_STREAM, STRATA_STREAM_POP, 3, 1, 0);
+  Machine m({addi(5, 0, 9), pop, addi(6, 0, 4)}, &hook);
+  m.hart.set_x(1, Machine::kDataBase);
+  m.hart.set_x(3, 123);
+  m.memory.write32(Machine::kDataBase, 0x5555u);
+  const uint32_t at = Machine::kCodeBase + 4;
+  RunResult r = m.run();
+  EXPECT_EQ(r.reason, StopReason::kDeferred);
+  EXPECT_EQ(r.executed, 1u);  // the addi only
+  EXPECT_EQ(r.pc, at);
+  EXPECT_EQ(m.hart.pc(), at);
+  EXPECT_EQ(m.hart.x(3), 123u);                                 // no destination written
+  EXPECT_EQ(m.memory.read32(Machine::kDataBase), 0x5555u);     // no store
+  EXPECT_NE(describe(r).find("deferred"), std::string::npos) << describe(r);
+  r = m.run();  // deferred again: still there
+  EXPECT_EQ(r.reason, StopReason::kDeferred);
+  EXPECT_EQ(r.executed, 0u);
+  EXPECT_EQ(m.hart.pc(), at);
+
+  hook.result.status = HookStatus::kOk;
+  r = m.run();
+  EXPECT_EQ(r.reason, StopReason::kHalt);
+  EXPECT_EQ(m.hart.x(3), 77u);
+  EXPECT_EQ(m.hart.x(6), 4u);
+  ASSERT_EQ(hook.calls.size(), 3u);  // asked twice, then executed
+  EXPECT_EQ(hook.calls[2].op, Op::kStStreamPop);
+}
+
 TEST(IssStrata, FpRegisterOperationsNeedFs) {
   RecordingHook hook;
   Machine m({strata(P, STRATA_F3_PIPE_LOAD, STRATA_SET_TMAX, 0, 1, 0)}, &hook);
