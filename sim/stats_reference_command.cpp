@@ -1,8 +1,9 @@
 // `strata-sim stats-reference`: writes docs/statistics.md from the descriptions every module
 // registers in the statistics tree, so the reference cannot go stale (a test compares the
 // checked-in file with this output). It elaborates a one-TP chip of the streams-and-pipelines
-// design in sampled timing (the mode with the most groups) on a tiny Cornell box and reads
-// its tree without simulating.
+// design in sampled timing (the mode with the most groups) with the banked DRAM (whose group
+// comes on top of the channel model's) on a tiny Cornell box and reads its tree without
+// simulating.
 #include <cstdio>
 #include <map>
 #include <set>
@@ -53,6 +54,8 @@ void write_reference() {
   config.tms = 1;
   config.tps_per_tm = 1;
   config.timing.mode = transport::TimingMode::kSampled;
+  // The banked DRAM adds its group (memory.dram.banked) to the channel model's statistics.
+  config.dram.model = memory::DramModel::kBanked;
   const scenes::Scene scene = scenes::make_cornell({0.05, 1});
   scenes::SceneImageParams params;
   params.treelet_bytes = config.l1d.size_bytes;

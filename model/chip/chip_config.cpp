@@ -131,6 +131,28 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   return out;
 }
 
+namespace {
+
+void bind_dram_timing(ConfigBinder& b, const std::string& p, memory::DramTimingConfig& t) {
+  b.bind(p + ".ranks", &t.ranks);
+  b.bind(p + ".bank_groups", &t.bank_groups);
+  b.bind(p + ".banks_per_group", &t.banks_per_group);
+  b.bind(p + ".row_bytes", &t.row_bytes);
+  b.bind(p + ".column_bytes", &t.column_bytes);
+  b.bind(p + ".hash_banks", &t.hash_banks);
+  b.bind_enum(p + ".row_policy", &t.row_policy, {"open", "closed"});
+  const std::pair<const char*, double*> times[] = {
+      {"t_rcd_ns", &t.t_rcd_ns},     {"t_rp_ns", &t.t_rp_ns},       {"t_cl_ns", &t.t_cl_ns},
+      {"t_cwl_ns", &t.t_cwl_ns},     {"t_ras_ns", &t.t_ras_ns},     {"t_rc_ns", &t.t_rc_ns},
+      {"t_rrd_s_ns", &t.t_rrd_s_ns}, {"t_rrd_l_ns", &t.t_rrd_l_ns}, {"t_faw_ns", &t.t_faw_ns},
+      {"t_ccd_s_ns", &t.t_ccd_s_ns}, {"t_ccd_l_ns", &t.t_ccd_l_ns}, {"t_wr_ns", &t.t_wr_ns},
+      {"t_wtr_ns", &t.t_wtr_ns},     {"t_rtp_ns", &t.t_rtp_ns},     {"t_refi_ns", &t.t_refi_ns},
+      {"t_rfc_ns", &t.t_rfc_ns},     {"controller_ns", &t.controller_ns}};
+  for (const auto& [name, field] : times) b.bind(p + "." + name, field);
+}
+
+}  // namespace
+
 void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);
   b.bind("design.streams", &design.streams);
@@ -209,6 +231,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.stream.sticky", &stream.sticky);
   b.bind("memory.stream.calendar_horizon_cycles", &stream.calendar_horizon_cycles);
   b.bind("memory.stream.access_energy_nj", &stream.access_energy_nj);
+  b.bind_enum("memory.dram.model", &dram.model, {"channel", "banked"});
   b.bind("memory.dram.channels", &dram.channels);
   b.bind("memory.dram.bytes_per_cycle", &dram.bytes_per_cycle);
   b.bind("memory.dram.latency_cycles", &dram.latency_cycles);
@@ -217,6 +240,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("memory.dram.hash_channels", &dram.hash_channels);
   b.bind("memory.dram.calendar_horizon_cycles", &dram.calendar_horizon_cycles);
   b.bind("memory.dram.access_energy_nj", &dram.access_energy_nj);
+  bind_dram_timing(b, "memory.dram.banked", dram.banked);
   b.bind("memory.interconnect.link_bytes_per_cycle", &interconnect.link_bytes_per_cycle);
   b.bind("memory.interconnect.hop_latency_cycles", &interconnect.hop_latency_cycles);
   b.bind("memory.interconnect.calendar_horizon_cycles", &interconnect.calendar_horizon_cycles);

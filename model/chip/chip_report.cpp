@@ -246,6 +246,14 @@ std::string FrameReport::summary() const {
   s += format("DRAM           %.3f MB%s, %.1f GB/s%s of %.0f GB/s peak [%s]\n", v.number("memory.dram.bytes") * 1e-6,
               pm("memory.dram.bytes").c_str(), v.number("memory.dram.bandwidth_gb_per_s"),
               pm("memory.dram.bandwidth_gb_per_s").c_str(), v.number("memory.dram.peak_gb_per_s"), ci.c_str());
+  if (v.has("memory.dram.banked.channels.row_hits")) {  // memory.dram.model = banked
+    const stats::Values& rows = v.group("memory.dram.banked.channels");
+    const double requests = rows.number("row_hits") + rows.number("row_misses") + rows.number("row_conflicts");
+    const auto share = [&](const char* name) { return requests > 0 ? 100.0 * rows.number(name) / requests : 0.0; };
+    s += format("DRAM rows      %.1f%% hits, %.1f%% misses, %.1f%% conflicts; mean read latency %.1f cycles [%s]\n",
+                share("row_hits"), share("row_misses"), share("row_conflicts"),
+                rows.number("mean_read_latency_cycles"), m);
+  }
   const std::pair<const char*, const char*> levels[] = {{"L1 data", "memory.l1d.by_data"},
                                                          {"interconnect", "memory.interconnect.by_data"},
                                                          {"L2", "memory.l2.by_data"},

@@ -103,6 +103,8 @@ double StreamMemoryConfig::energy_per_access_nj() const {
   return access_energy_nj ? *access_energy_nj : sram_access_energy_nj(size_bytes);
 }
 
+const char* to_string(DramModel m) { return m == DramModel::kBanked ? "banked" : "channel"; }
+
 void DramConfig::validate() const {
   need_positive("dram.channels", channels);
   need_positive("dram.bytes_per_cycle", bytes_per_cycle);
@@ -116,6 +118,7 @@ void DramConfig::validate() const {
   need_horizon("dram.calendar_horizon_cycles", calendar_horizon_cycles);
   need_latency("dram.latency_cycles", latency_cycles);
   need_energy("dram.access_energy_nj", access_energy_nj);
+  if (model == DramModel::kBanked) banked.validate(channel_bytes_per_cycle());
 }
 
 void InterconnectConfig::validate() const {

@@ -4,6 +4,8 @@
 // access. Every struct has a validate() that throws std::invalid_argument.
 #pragma once
 
+#include "model/memory/dram_timing.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -102,7 +104,14 @@ struct StreamMemoryConfig {
   double energy_per_access_nj() const;
 };
 
+enum class DramModel : uint8_t {
+  kChannel,  // each channel a data bus behind a fixed latency (Dram; the default)
+  kBanked,   // each channel ranks, bank groups and banks with row buffers and command timing
+};
+const char* to_string(DramModel m);
+
 struct DramConfig {
+  DramModel model = DramModel::kChannel;
   uint32_t channels = 8;
   uint32_t bytes_per_cycle = 256;  // total peak: 256 GB/s at 1 GHz, split evenly over channels
   uint32_t latency_cycles = 100;   // from request to first data, unloaded
@@ -114,6 +123,8 @@ struct DramConfig {
   uint32_t burst_bytes = 64;        // one access moves up to this much; energy is per access
   uint32_t calendar_horizon_cycles = 16384;
   double access_energy_nj = 16.3;  // STRaTA table: off-chip DRAM, per access
+  // model = banked only (latency_cycles is then unused: the commands' timing gives it).
+  DramTimingConfig banked;
   void validate() const;
   uint32_t channel_bytes_per_cycle() const { return bytes_per_cycle / channels; }
 };

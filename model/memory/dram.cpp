@@ -23,6 +23,7 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
   for (uint32_t c = 0; c < config_.channels; ++c)
     buses_.emplace_back(config_.channel_bytes_per_cycle(), config_.calendar_horizon_cycles);
   channels_.resize(config_.channels);  // never resized again: the stats point into it
+  if (config_.model == DramModel::kBanked) banked_ = std::make_unique<BankedDram>(config_);
 
   using stats::Unit;
   const Counters& t = counters_;
@@ -69,6 +70,12 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
     tr_depth_.push_back(trace_.add_level("channel" + std::to_string(c) + ".queue_cycles"));
   }
   g.instances("channels", each, "channel", "DRAM channel", false);
+  if (banked_) g.child(&banked_->stats());
+}
+
+void Dram::set_clock(const transport::Clock& clock) {
+  clock_ = clock;
+  if (banked_) banked_->set_clock_ghz(1e-9 / clock_.duration(1).to_seconds());
 }
 
 void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trace_.open(file, name(), window); }
@@ -76,6 +83,7 @@ void Dram::trace(sc_core::sc_trace_file* file, const TraceWindow& window) { trac
 uint64_t Dram::overflow_bookings() const {
   uint64_t n = 0;
   for (const auto& b : buses_) n += b.overflow_bookings();
+  if (banked_) n += banked_->overflow_bookings();
   return n;
 }
 
@@ -102,18 +110,29 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   const Cycle t = clock_.request_cycle_at(stamp, delay);
   transport::ReservationCalendar& bus = buses_[ch];
   bus.retire_before(now);
-  const Cycle data_from = t + config_.latency_cycles;
-  const transport::Booking b = bus.book(data_from, bytes);
+  const bool counted = transport::counts(ext);  // sampled timing measures part of each detailed window only
+  Cycle end = 0, queued = 0;
+  if (banked_) {
+    const BankedDram::Result r = banked_->access(ch, addr, bytes, write, t, now, bus, counted);
+    end = r.end;
+    queued = r.queued;
+  } else {
+    const Cycle data_from = t + config_.latency_cycles;
+    const transport::Booking b = bus.book(data_from, bytes);
+    const Cycle unloaded =
+        data_from + (bytes + config_.channel_bytes_per_cycle() - 1) / config_.channel_bytes_per_cycle();
+    end = b.end();
+    queued = end > unloaded ? end - unloaded : 0;
+  }
 
   const uint64_t bursts = (bytes + config_.burst_bytes - 1) / config_.burst_bytes;
   const double energy = static_cast<double>(bursts) * config_.access_energy_nj;
-  const Cycle unloaded = data_from + (bytes + config_.channel_bytes_per_cycle() - 1) / config_.channel_bytes_per_cycle();
-  if (transport::counts(ext)) {  // sampled timing measures part of each detailed window only
+  if (counted) {
     ChannelCounters& k = channels_[ch];
     k.accesses += bursts;
     ++k.requests;
     (write ? k.bytes_written : k.bytes_read) += bytes;
-    k.queued_cycles += b.end() > unloaded ? b.end() - unloaded : 0;
+    k.queued_cycles += queued;
     k.energy_nj += energy;
     counters_.accesses += bursts;
     ++counters_.requests;
@@ -130,7 +149,7 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   }
   if (ext != nullptr) ext->served_by = transport::ServedBy::kDram;
   gp.set_response_status(tlm::TLM_OK_RESPONSE);
-  delay = clock_.delay_until_at(stamp, b.end());
+  delay = clock_.delay_until_at(stamp, end);
 }
 
 }  // namespace strata::memory

@@ -3,11 +3,15 @@
 // reservation calendar in bytes per cycle: an access asks for its bytes at or after
 // request + latency, so an idle channel answers in latency + bytes/bandwidth and a busy one
 // queues it behind the bytes already booked. Functional data lives in the SparseMemory.
+// With memory.dram.model = banked, the time from request to data comes from BankedDram
+// instead (banks, row buffers, command timing); the channels, their hash, their buses and
+// every statistic here stay, and BankedDram's statistics join them under "banked".
 #pragma once
 
 #include "model/memory/bank_interleave.h"
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
+#include "model/memory/dram_banked.h"
 #include "model/memory/sparse_memory.h"
 #include "model/stats/stat_group.h"
 #include "model/memory/window_trace.h"
@@ -51,12 +55,13 @@ class Dram : public sc_core::sc_module {
   }
   // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
   // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
-  void set_clock(const transport::Clock& clock) { clock_ = clock; }
+  void set_clock(const transport::Clock& clock);
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
   const stats::Group& stats() const { return stats_; }
   const DramConfig& config() const { return config_; }
   SparseMemory& backing() { return backing_; }
+  const BankedDram* banked() const { return banked_.get(); }  // null unless model = banked
   uint64_t overflow_bookings() const;
   // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead).
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
@@ -71,6 +76,7 @@ class Dram : public sc_core::sc_module {
   uint32_t interleave_shift_ = 0;
   BankInterleave channels_of_{1, false};  // set from the config in the constructor
   std::vector<transport::ReservationCalendar> buses_;
+  std::unique_ptr<BankedDram> banked_;
   std::vector<ChannelCounters> channels_;
   Counters counters_;
   stats::Group stats_;

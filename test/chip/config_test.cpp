@@ -151,6 +151,21 @@ TEST(ChipConfig, AnOverrideThatIsNotUtf8IsRefusedNamingTheField) {
   EXPECT_EQ(load_chip_config(trax, {"design.name=caf\xc3\xa9"}).design.name, "caf\xc3\xa9");
 }
 
+// memory.dram.model picks the DRAM model; its banked timings are checked against the
+// standard's rules only when the banked model is chosen, and errors name the field.
+TEST(ChipConfig, DramModelIsChannelByDefaultAndBankedOnRequest) {
+  const std::string trax = config_dir() + "trax.json";
+  EXPECT_EQ(load_chip_config(trax, {}).dram.model, memory::DramModel::kChannel);
+  const ChipConfig banked = load_chip_config(trax, {"memory.dram.model=banked", "memory.dram.banked.row_policy=closed"});
+  EXPECT_EQ(banked.dram.model, memory::DramModel::kBanked);
+  EXPECT_EQ(banked.dram.banked.row_policy, memory::RowPolicy::kClosed);
+  std::string e = error_of(trax, {"memory.dram.model=hbm"});
+  EXPECT_NE(e.find("memory.dram.model: expected one of channel, banked"), std::string::npos) << e;
+  e = error_of(trax, {"memory.dram.model=banked", "memory.dram.banked.t_rc_ns=40"});
+  EXPECT_NE(e.find("memory.dram: dram.banked.t_rc_ns: must be at least t_ras_ns + t_rp_ns"), std::string::npos) << e;
+  EXPECT_EQ(error_of(trax, {"memory.dram.banked.t_rc_ns=40"}), "");  // the channel model ignores it
+}
+
 TEST(ChipConfig, AFolderAsTheConfigIsNamed) {
   const std::string e = error_of(config_dir(), {});
   EXPECT_NE(e.find("cannot open config file: not a regular file"), std::string::npos) << e;

@@ -1,0 +1,321 @@
+#include "model/memory/dram_banked.h"
+
+#include <algorithm>
+#include <string>
+
+namespace strata::memory {
+
+namespace {
+uint32_t log2_of(uint64_t pow2) {
+  uint32_t n = 0;
+  while ((uint64_t{1} << n) < pow2) ++n;
+  return n;
+}
+using transport::Cycle;
+Cycle later(Cycle a, Cycle b) { return a > b ? a : b; }
+}  // namespace
+
+BankedDram::Rank::Rank(uint32_t groups, uint32_t horizon)
+    : acts(1, horizon), columns(1, horizon), window(4, horizon) {
+  group_acts.reserve(groups);
+  group_columns.reserve(groups);
+  for (uint32_t g = 0; g < groups; ++g) {
+    group_acts.emplace_back(1, horizon);
+    group_columns.emplace_back(1, horizon);
+  }
+}
+
+BankedDram::BankedDram(const DramConfig& config)
+    : config_(config),
+      timing_(DramTiming::at(config.banked, 1.0, config.channel_bytes_per_cycle())),
+      stats_("banked", "Banked DRAM (memory.dram.model = banked): row buffers, commands and refresh.") {
+  const DramTimingConfig& b = config_.banked;
+  interleave_shift_ = log2_of(config_.interleave_bytes);
+  column_shift_ = log2_of(b.row_bytes);
+  bank_bits_ = log2_of(b.banks());
+  channels_.resize(config_.channels);
+  for (Channel& ch : channels_) {
+    ch.banks.resize(b.banks());
+    ch.ranks.reserve(b.ranks);
+    for (uint32_t r = 0; r < b.ranks; ++r) ch.ranks.emplace_back(b.bank_groups, config_.calendar_horizon_cycles);
+  }
+  set_clock_ghz(1.0);
+  counters_.resize(config_.channels);
+
+  using stats::Unit;
+  std::vector<const stats::Group*> each;
+  for (uint32_t c = 0; c < config_.channels; ++c) {
+    ChannelCounters& k = counters_[c];
+    auto g = std::make_unique<stats::Group>("channel" + std::to_string(c), "The banked DRAM's channels.");
+    g->count("row_hits", &k.row_hits, Unit::kCount, "Requests whose row was open in its bank.");
+    g->count("row_misses", &k.row_misses, Unit::kCount, "Requests to a closed (precharged) bank: an ACT first.");
+    g->count("row_conflicts", &k.row_conflicts, Unit::kCount,
+             "Requests to a bank with another row open: a PRE and an ACT first.");
+    g->count("activates", &k.activates, Unit::kCount, "ACT commands.");
+    g->count("precharges", &k.precharges, Unit::kCount, "PRE commands (closed page: one per request).");
+    g->count("read_commands", &k.reads, Unit::kCount, "RD commands, one per column (column_bytes).");
+    g->count("write_commands", &k.writes, Unit::kCount, "WR commands, one per column (column_bytes).");
+    g->count("refreshes", &k.refreshes, Unit::kCount, "All-bank refreshes, every tREFI per rank up to the last request.");
+    g->count("refresh_cycles", &k.refresh_cycles, Unit::kCycles,
+             "Cycles ranks spent refreshing (tRFC per refresh), summed over ranks.");
+    g->count("read_requests", &k.read_requests, Unit::kCount, "Read requests.");
+    g->count("read_latency_cycles", &k.read_latency_cycles, Unit::kCycles,
+             "Cycles from each read request to its last data, summed.");
+    g->ratio("mean_read_latency_cycles", "read_latency_cycles", {"read_requests"},
+             "Mean cycles from a read request to its last data (cycles, though a ratio).");
+    each.push_back(g.get());
+    channel_stats_.push_back(std::move(g));
+  }
+  stats_.instances("channels", each, "channel", "Banked DRAM channel");
+}
+
+void BankedDram::set_clock_ghz(double ghz) {
+  timing_ = DramTiming::at(config_.banked, ghz, config_.channel_bytes_per_cycle());
+  // Ranks refresh in turn, spread over the interval, so the channel is never blocked whole.
+  for (Channel& ch : channels_)
+    for (uint32_t r = 0; r < ch.ranks.size(); ++r)
+      ch.ranks[r].next_refresh = timing_.refi + uint64_t{r} * timing_.refi / ch.ranks.size();
+}
+
+BankedDram::Location BankedDram::locate(uint64_t addr) const {
+  // Take the channel's bits out (channel is the lowest field above the interleave block), so
+  // consecutive blocks of one channel are consecutive in its rows.
+  const uint64_t block = addr >> interleave_shift_;
+  const uint64_t local =
+      ((block / config_.channels) << interleave_shift_) | (addr & ((uint64_t{1} << interleave_shift_) - 1));
+  const uint64_t bank_mask = (uint64_t{1} << bank_bits_) - 1;
+  Location at;
+  at.row = local >> (column_shift_ + bank_bits_);
+  uint64_t bank = (local >> column_shift_) & bank_mask;
+  if (config_.banked.hash_banks) bank ^= at.row & bank_mask;  // rows a power of two apart differ in bank
+  at.bank = static_cast<uint32_t>(bank);
+  const DramTimingConfig& b = config_.banked;
+  // Bank groups take the lowest bits, so neighbouring rows alternate groups (tCCD_S, tRRD_S).
+  at.group = at.bank % b.bank_groups;
+  at.rank = at.bank / (b.bank_groups * b.banks_per_group);
+  return at;
+}
+
+// A rank refreshes all its banks at once: every open row is precharged first (as soon as
+// each bank allows), then REF holds the rank for tRFC (no ACT in it). Applied when a request
+// reaches a time at or past the refresh that was due.
+void BankedDram::refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelCounters& k) {
+  Rank& r = ch.ranks[rank];
+  const uint32_t per_rank = config_.banked.bank_groups * config_.banked.banks_per_group;
+  while (r.next_refresh <= until) {
+    Cycle start = r.next_refresh;
+    for (uint32_t i = 0; i < per_rank; ++i) {
+      const Bank& b = ch.banks[rank * per_rank + i];
+      start = later(start, b.open ? later(r.next_refresh, b.next_pre) + timing_.rp : b.next_act);
+    }
+    for (uint32_t i = 0; i < per_rank; ++i) {
+      Bank& b = ch.banks[rank * per_rank + i];
+      if (b.open) ++k.precharges;
+      b.open = false;
+    }
+    r.refresh_from = start;
+    r.refresh_to = start + timing_.rfc;
+    ++k.refreshes;
+    k.refresh_cycles += timing_.rfc;
+    r.next_refresh += timing_.refi;
+  }
+}
+
+namespace {
+// The first cycle >= from where `length` cycles of `c` are free (from itself if length is 0:
+// no constraint); kNone beyond the horizon.
+Cycle gap(const transport::ReservationCalendar& c, Cycle from, uint32_t length) {
+  return length == 0 ? from : c.first_gap(from, length);
+}
+constexpr Cycle kNone = transport::ReservationCalendar::kNone;
+}  // namespace
+
+Cycle BankedDram::act_slot(const Rank& r, uint32_t group, Cycle from) const {
+  // Each calendar can only move the cycle later; stop when all three agree.
+  for (Cycle a = from;;) {
+    Cycle b = gap(r.acts, a, timing_.rrd_s);
+    if (b != kNone) b = gap(r.group_acts[group], b, timing_.rrd_l);
+    if (b != kNone) b = gap(r.window, b, timing_.faw);
+    if (b == kNone || b == a) return b == kNone ? kNever : b;
+    a = b;
+  }
+}
+
+void BankedDram::book_act(Rank& r, uint32_t group, Cycle at) {
+  if (timing_.rrd_s > 0) r.acts.book(at, timing_.rrd_s);
+  if (timing_.rrd_l > 0) r.group_acts[group].book(at, timing_.rrd_l);
+  for (Cycle c = at; c < at + timing_.faw; ++c) r.window.book_below(c, 4);
+}
+
+Cycle BankedDram::column_slot(const Rank& r, uint32_t group, Cycle from, Cycle lead, const Calendar& bus) const {
+  for (Cycle a = from;;) {
+    Cycle b = gap(r.columns, a, timing_.ccd_s);
+    if (b != kNone) b = gap(r.group_columns[group], b, timing_.ccd_l);
+    if (b != kNone) {  // the data's cycles on the bus, whole (every booking fills whole cycles)
+      b = bus.first_gap(b + lead, timing_.burst);
+      if (b != kNone) b -= lead;
+    }
+    if (b == kNone || b == a) return b == kNone ? kNever : b;
+    a = b;
+  }
+}
+
+void BankedDram::book_column(Rank& r, uint32_t group, Cycle at) {
+  if (timing_.ccd_s > 0) r.columns.book(at, timing_.ccd_s);
+  if (timing_.ccd_l > 0) r.group_columns[group].book(at, timing_.ccd_l);
+}
+
+uint64_t BankedDram::overflow_bookings() const {
+  uint64_t n = overflows_;
+  for (const Channel& ch : channels_)
+    for (const Rank& r : ch.ranks) {
+      n += r.acts.overflow_bookings() + r.columns.overflow_bookings() + r.window.overflow_bookings();
+      for (const Calendar& c : r.group_acts) n += c.overflow_bookings();
+      for (const Calendar& c : r.group_columns) n += c.overflow_bookings();
+    }
+  return n;
+}
+
+BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t,
+                                      Cycle now, transport::ReservationCalendar& bus, bool count) {
+  Channel& ch = channels_[channel];
+  ChannelCounters scratch;
+  ChannelCounters& k = count ? counters_[channel] : scratch;
+  const Location at = locate(addr);
+  Bank& bank = ch.banks[at.bank];
+  Rank& rank = ch.ranks[at.rank];
+  const Cycle arrive = t + timing_.controller;
+  rank.acts.retire_before(now);
+  rank.columns.retire_before(now);
+  rank.window.retire_before(now);
+  rank.group_acts[at.group].retire_before(now);
+  rank.group_columns[at.group].retire_before(now);
+
+  // An ACT at or after `from`, by the rank's calendars, outside the latest refresh.
+  auto place_act = [&](Cycle from) {
+    Cycle a = act_slot(rank, at.group, from);
+    if (a != kNever && a >= rank.refresh_from && a < rank.refresh_to) a = act_slot(rank, at.group, rank.refresh_to);
+    if (a == kNever) {  // beyond the horizon: without the rank's constraints
+      a = from < rank.refresh_from || from >= rank.refresh_to ? from : rank.refresh_to;
+      ++overflows_;
+    }
+    return a;
+  };
+
+  // A request earlier in time than its bank's latest ACT arrived late in call order (its TM
+  // ran behind). If a whole row cycle of its own (ACT, columns, PRE) fits before that ACT, it
+  // is served there as a miss and leaves the bank's state, which is later, alone; else it
+  // queues behind, first come, first served.
+  if (bank.last_act != kNever && arrive + timing_.rc <= bank.last_act) {
+    const Cycle act = place_act(arrive);
+    if (act + timing_.rc <= bank.last_act) {
+      ++k.row_misses;
+      ++k.activates;
+      ++k.precharges;
+      book_act(rank, at.group, act);
+      const Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
+      if (!write) {
+        ++k.read_requests;
+        k.read_latency_cycles += r.end - t;
+      }
+      return r;
+    }
+  }
+
+  // The request's first command (PRE, ACT, or its first column command on a row hit) must
+  // come before the rank's next refresh; else the refresh goes first and the plan is redone.
+  bool hit = false, conflict = false;
+  Cycle pre = 0, act = 0, col_ready = 0;
+  for (;;) {
+    refresh_until(ch, at.rank, arrive, k);
+    hit = bank.open && bank.row == at.row;
+    conflict = bank.open && !hit;
+    Cycle first;
+    if (hit) {
+      col_ready = later(arrive, bank.next_col);
+      first = col_ready;
+    } else {
+      pre = conflict ? later(arrive, bank.next_pre) : 0;
+      Cycle from = later(conflict ? pre + timing_.rp : arrive, bank.next_act);
+      if (bank.last_act != kNever) from = later(from, bank.last_act + timing_.rc);
+      act = place_act(from);
+      col_ready = act + timing_.rcd;
+      first = conflict ? pre : act;
+    }
+    if (first < rank.next_refresh) break;
+    refresh_until(ch, at.rank, first, k);
+  }
+
+  if (hit) {
+    ++k.row_hits;
+  } else {
+    if (conflict) {
+      ++k.row_conflicts;
+      ++k.precharges;
+    } else {
+      ++k.row_misses;
+    }
+    ++k.activates;
+    bank.open = true;
+    bank.row = at.row;
+    bank.last_act = act;
+    bank.next_act = later(bank.next_act, act + timing_.rc);
+    bank.next_pre = later(bank.next_pre, act + timing_.ras);
+    bank.next_col = act + timing_.rcd;
+    book_act(rank, at.group, act);
+  }
+
+  const Result result = issue_columns(rank, &bank, at.group, col_ready, bytes, write, bus, k);
+
+  if (config_.banked.row_policy == RowPolicy::kClosed) {  // auto-precharge after the last column
+    ++k.precharges;
+    bank.open = false;
+    bank.next_act = later(bank.next_act, bank.next_pre + timing_.rp);
+  }
+  if (!write) {
+    ++k.read_requests;
+    k.read_latency_cycles += result.end - t;
+  }
+  return result;
+}
+
+// Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a
+// write) allow, then as early as the data bus has room: a busy bus delays the command. `bank`
+// (null: a request served before the bank's later state) learns its tRTP and tWR limits.
+BankedDram::Result BankedDram::issue_columns(Rank& rank, Bank* bank, uint32_t group, Cycle col_ready, uint32_t bytes,
+                                             bool write, transport::ReservationCalendar& bus, ChannelCounters& k) {
+  const uint32_t column = config_.banked.column_bytes;
+  const uint32_t columns = std::max<uint32_t>(1, (bytes + column - 1) / column);
+  const Cycle latency = write ? timing_.cwl : timing_.cl;
+  Result result;
+  for (uint32_t i = 0; i < columns; ++i) {
+    Cycle want = col_ready;
+    // tWTR: a read after (in call order) a write whose command it would follow.
+    if (!write && rank.last_write != kNever && want >= rank.last_write)
+      want = later(want, rank.write_data_end + timing_.wtr);
+    Cycle c = column_slot(rank, group, want, latency, bus);
+    if (c == kNever) {  // beyond the horizon: the bus's overflow tail serves it in arrival order
+      c = want;
+      ++overflows_;
+    } else {
+      book_column(rank, group, c);
+    }
+    const transport::Booking data = bus.book(c + latency, column);
+    result.queued += data.first - (want + latency);
+    c = data.first - latency;
+    if (write) {
+      ++k.writes;
+      rank.last_write = c;
+      rank.write_data_end = data.end();
+      if (bank != nullptr) bank->next_pre = later(bank->next_pre, data.end() + timing_.wr);
+    } else {
+      ++k.reads;
+      if (bank != nullptr) bank->next_pre = later(bank->next_pre, c + timing_.rtp);
+    }
+    col_ready = c;
+    result.end = later(result.end, data.end());
+  }
+  return result;
+}
+
+}  // namespace strata::memory
