@@ -29,6 +29,24 @@ void bind_pipeline(ConfigBinder& b, const std::string& p, tm::FusedPipelineConfi
   b.bind(p + ".issue_width", &f.issue_width);
 }
 
+void bind_dram_timing(ConfigBinder& b, const std::string& p, memory::DramTimingConfig& t) {
+  b.bind(p + ".ranks", &t.ranks);
+  b.bind(p + ".bank_groups", &t.bank_groups);
+  b.bind(p + ".banks_per_group", &t.banks_per_group);
+  b.bind(p + ".row_bytes", &t.row_bytes);
+  b.bind(p + ".column_bytes", &t.column_bytes);
+  b.bind(p + ".hash_banks", &t.hash_banks);
+  b.bind_enum(p + ".row_policy", &t.row_policy, {"open", "closed"});
+  const std::pair<const char*, double*> times[] = {
+      {"t_rcd_ns", &t.t_rcd_ns},     {"t_rp_ns", &t.t_rp_ns},       {"t_cl_ns", &t.t_cl_ns},
+      {"t_cwl_ns", &t.t_cwl_ns},     {"t_ras_ns", &t.t_ras_ns},     {"t_rc_ns", &t.t_rc_ns},
+      {"t_rrd_s_ns", &t.t_rrd_s_ns}, {"t_rrd_l_ns", &t.t_rrd_l_ns}, {"t_faw_ns", &t.t_faw_ns},
+      {"t_ccd_s_ns", &t.t_ccd_s_ns}, {"t_ccd_l_ns", &t.t_ccd_l_ns}, {"t_wr_ns", &t.t_wr_ns},
+      {"t_wtr_ns", &t.t_wtr_ns},     {"t_rtp_ns", &t.t_rtp_ns},     {"t_refi_ns", &t.t_refi_ns},
+      {"t_rfc_ns", &t.t_rfc_ns},     {"controller_ns", &t.controller_ns}};
+  for (const auto& [name, field] : times) b.bind(p + "." + name, field);
+}
+
 template <class F>
 void checked(const char* section, F&& validate) {
   try {
@@ -130,28 +148,6 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   check(t.sample_target_stats != d.sample_target_stats, "timing.sample_target_stats");
   return out;
 }
-
-namespace {
-
-void bind_dram_timing(ConfigBinder& b, const std::string& p, memory::DramTimingConfig& t) {
-  b.bind(p + ".ranks", &t.ranks);
-  b.bind(p + ".bank_groups", &t.bank_groups);
-  b.bind(p + ".banks_per_group", &t.banks_per_group);
-  b.bind(p + ".row_bytes", &t.row_bytes);
-  b.bind(p + ".column_bytes", &t.column_bytes);
-  b.bind(p + ".hash_banks", &t.hash_banks);
-  b.bind_enum(p + ".row_policy", &t.row_policy, {"open", "closed"});
-  const std::pair<const char*, double*> times[] = {
-      {"t_rcd_ns", &t.t_rcd_ns},     {"t_rp_ns", &t.t_rp_ns},       {"t_cl_ns", &t.t_cl_ns},
-      {"t_cwl_ns", &t.t_cwl_ns},     {"t_ras_ns", &t.t_ras_ns},     {"t_rc_ns", &t.t_rc_ns},
-      {"t_rrd_s_ns", &t.t_rrd_s_ns}, {"t_rrd_l_ns", &t.t_rrd_l_ns}, {"t_faw_ns", &t.t_faw_ns},
-      {"t_ccd_s_ns", &t.t_ccd_s_ns}, {"t_ccd_l_ns", &t.t_ccd_l_ns}, {"t_wr_ns", &t.t_wr_ns},
-      {"t_wtr_ns", &t.t_wtr_ns},     {"t_rtp_ns", &t.t_rtp_ns},     {"t_refi_ns", &t.t_refi_ns},
-      {"t_rfc_ns", &t.t_rfc_ns},     {"controller_ns", &t.controller_ns}};
-  for (const auto& [name, field] : times) b.bind(p + "." + name, field);
-}
-
-}  // namespace
 
 void ChipConfig::bind(ConfigBinder& b) {
   b.bind("design.name", &design.name);

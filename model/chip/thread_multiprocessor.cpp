@@ -158,7 +158,8 @@ void ThreadMultiprocessor::run() {
     const uint64_t second = schedule.runner_up();
     const uint32_t index = static_cast<uint32_t>(best & 63u);
     const Cycle start = best >> 6;
-    Cycle until = second == TpSchedule::kDone ? TpSchedule::kDone : (second >> 6) + burst_slack_;
+    const Cycle others = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;  // the runner-up's cycle
+    Cycle until = others == TpSchedule::kDone ? TpSchedule::kDone : others + burst_slack_;
     Tp& tp = *tps_[index];
     // Every TP of this TM issues at or after `start` during this burst.
     xus_.set_floor(start);
@@ -167,12 +168,13 @@ void ThreadMultiprocessor::run() {
       window = sampler_.window_of(start);
       if (!sampler_.detailed(start)) {
         // Fast-forward: batches of up to timing.fast_forward_batch_quanta past the runner-up,
-        // never into the next detailed window. Nothing is booked, so running that far ahead
-        // only reorders stream operations between TMs, which the kernels are built to tolerate.
+        // never into the next detailed window. Nothing is booked; the batch's stream and
+        // global-register ops wait for their dates, or stop it when dated past `others`
+        // (timing.fast_forward_time_order, tm_fast_forward.cpp).
         const Cycle next_window = sampler_.next_window(window);
         const Cycle ahead = Cycle{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles;
-        const Cycle ff_until = second == TpSchedule::kDone ? next_window : std::min(next_window, (second >> 6) + ahead);
-        ff_others_ = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
+        const Cycle ff_until = others == TpSchedule::kDone ? next_window : std::min(next_window, others + ahead);
+        ff_others_ = others;
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());
         } else {
@@ -190,7 +192,6 @@ void ThreadMultiprocessor::run() {
         tp.forwarded = false;
       }
     }
-    const Cycle others = second == TpSchedule::kDone ? TpSchedule::kDone : second >> 6;
     for (Cycle t = start;; t = tp.timing.next_issue()) {
       sync_to(t, others);
       // An op that must reach shared state in time order is sent when global time reaches

@@ -44,7 +44,7 @@ StreamMemory::StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfi
           "Fidelity: pushes, pops, size queries and assignments dated before one already served, over the "
           "whole frame: the ray schedule changed out of time order. About 1 in 1,000 stream accesses in precise "
           "mode, in LT with timing.sync_shared_ops and in sampled timing with timing.fast_forward_time_order; "
-          "nearly half of them with either option off.");
+          "45% on the test frame sampled with timing.fast_forward_time_order=false.");
   g.count("full_rejections", &c.full_rejections, Unit::kCount, "Pushes refused because the memory was full (retried).",
           stats::Basis::kStreamMoves);
   g.count("empty_pops", &c.empty_pops, Unit::kCount, "Pops that found the buffer empty.", stats::Basis::kStreamMoves);
