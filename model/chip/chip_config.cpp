@@ -146,6 +146,7 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   check(t.fast_forward_op_classes != d.fast_forward_op_classes, "timing.fast_forward_op_classes");
   check(t.sample_target_error != d.sample_target_error, "timing.sample_target_error");
   check(t.sample_target_stats != d.sample_target_stats, "timing.sample_target_stats");
+  check(t.sample_interval != d.sample_interval, "timing.sample_interval");
   return out;
 }
 
@@ -172,6 +173,8 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.fast_forward_op_classes", &timing.fast_forward_op_classes);
   b.bind("timing.sample_target_error", &timing.sample_target_error);
   b.bind("timing.sample_target_stats", &timing.sample_target_stats);
+  // The names in IntervalMethod's order.
+  b.bind_enum("timing.sample_interval", &timing.sample_interval, {"jackknife", "successive"});
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);

@@ -11,6 +11,7 @@
 
 #include "model/chip/config_binder.h"
 #include "model/memory/config.h"
+#include "model/stats/interval_method.h"
 #include "model/tm/tm_config.h"
 #include "tlm/clock.h"
 #include "tlm/timing_mode.h"
@@ -110,6 +111,12 @@ struct TimingConfig {
   // the figures a design comparison reads: frame time, DRAM bytes and L2 accesses (DRAM varies
   // far more between windows than cycles do: a target on cycles alone left it at +-30-47%).
   std::string sample_target_stats = "frame.cycles,memory.dram.bytes,memory.l2.accesses";
+  // Sampled: how the batches' replicates become an interval (model/stats/interval_method.h).
+  // "successive" (differences of neighbouring batches) follows the frame's trends, as windows
+  // spread evenly over it do; "jackknife" treats the batches as exchangeable and counts a trend
+  // as variance: STRaTA's DRAM intervals stayed at +-29-47% whatever the windows
+  // (docs/sampled-timing.md, "Trends and the interval").
+  stats::IntervalMethod sample_interval = stats::IntervalMethod::kSuccessiveDifferences;
 };
 
 // Per-access energies not owned by a memory module (nJ). The STRaTA table gives the register

@@ -159,8 +159,10 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
   if (has_intervals()) {
     // Each estimate's interval beside the tree: intervals.stats mirrors its paths.
     nlohmann::json iv = {{"confidence", kConfidence},
-                         {"method", "delete-one-batch jackknife over consecutive batches of sampling windows, "
-                                    "Student t (docs/sampled-timing.md)"},
+                         {"method", std::string("delete-one-batch replicates over consecutive batches of sampling "
+                                                "windows, their spread by ") +
+                                        stats::interval_method_name(chip_.window_batches()->method()) +
+                                        ", Student t (docs/sampled-timing.md)"},
                          {"windows", windows_},
                          {"batches", batches_}};
     if (!interval_note_.empty()) iv["note"] = interval_note_;
@@ -324,9 +326,10 @@ std::string FrameReport::summary() const {
     if (!interval_note_.empty())
       s += format("warning        %s\n", interval_note_.c_str());
     else
-      s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (jackknife); figures without "
+      s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (%s); figures without "
                   "a \u00b1 are exact [sampled]\n",
-                  100 * kConfidence, windows_, batches_);
+                  100 * kConfidence, windows_, batches_,
+                  stats::interval_method_name(chip_.window_batches()->method()));
     if (cfg.timing.sample_target_error > 0) s += target_lines();
   }
   return s;

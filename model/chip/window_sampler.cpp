@@ -17,7 +17,7 @@ WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& con
       root_(root),
       turns_(turns),
       progress_(std::move(progress)),
-      batches_(&WindowSampler::measured) {
+      batches_(&WindowSampler::measured, 32, config.timing.sample_interval) {
   // Checked when the chip is built, so a misspelt name stops the run before it starts.
   targets_ = target_stats(config_, stats::Values::snapshot(root_));
   windows_.resize(targets_.size());

@@ -6,7 +6,7 @@
 // With an error target (timing.sample_target_error), the sampler also chooses the period: after
 // a pilot of kPilotWindows windows at the configured period, at every window it estimates the
 // intervals of the statistics the target names (timing.sample_target_stats: frame cycles, DRAM
-// bytes and L2 accesses by default) from the windows so far, by the report's own jackknife, and
+// bytes and L2 accesses by default) from the windows so far, by the report's own interval, and
 // how long the frame will be (from the share of pixels done). It sets the period of the windows
 // to come to the longest that still brings every named interval to the target: shorter than the
 // configured one when the target needs more windows, longer when it needs fewer.
@@ -87,7 +87,7 @@ class WindowSampler : public sc_core::sc_module {
   void run();
   void retarget(uint64_t now, const stats::Values& cumulative);
   // Each target's relative half-width from the windows so far, by the report's estimator
-  // (SampledEstimate and the batches' jackknife); 0 where no interval can be given yet.
+  // (SampledEstimate and the batches' interval); 0 where no interval can be given yet.
   std::vector<double> relative_half_widths(uint64_t now, const stats::Values& cumulative) const;
   // The target statistics' measured counts in a raw cumulative tree (frame.cycles: the
   // measured cycles).

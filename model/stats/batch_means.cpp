@@ -1,5 +1,6 @@
 #include "model/stats/batch_means.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -7,8 +8,16 @@
 
 namespace strata::stats {
 
-BatchMeans::BatchMeans(Selector measured, size_t max_batches)
-    : measured_(std::move(measured)), max_batches_(max_batches < 2 ? 2 : max_batches) {}
+BatchMeans::BatchMeans(Selector measured, size_t max_batches, IntervalMethod method)
+    : measured_(std::move(measured)), max_batches_(max_batches < 2 ? 2 : max_batches), method_(method) {}
+
+const char* interval_method_name(IntervalMethod m) {
+  switch (m) {
+    case IntervalMethod::kJackknife: return "jackknife";
+    case IntervalMethod::kSuccessiveDifferences: return "successive differences";
+  }
+  return "?";
+}
 
 void BatchMeans::add_window(const Values& cumulative, double weight) {
   Values window = cumulative;
@@ -88,7 +97,8 @@ std::vector<double> BatchMeans::half_widths(const Values& total,
   std::vector<double> column(n);
   for (size_t k = 0; k < out.size(); ++k) {
     for (size_t i = 0; i < n; ++i) column[i] = replicates[i][k];
-    out[k] = jackknife_half_width(column, confidence);
+    out[k] = method_ == IntervalMethod::kJackknife ? jackknife_half_width(column, confidence)
+                                                   : successive_difference_half_width(column, confidence);
   }
   return out;
 }
@@ -102,6 +112,26 @@ double jackknife_half_width(const std::vector<double>& replicates, double confid
   double ss = 0.0;
   for (double r : replicates) ss += (r - mean) * (r - mean);
   const double t = student_t_quantile(0.5 + 0.5 * confidence, static_cast<unsigned>(n - 1));
+  return t * std::sqrt(ss * double(n - 1) / double(n));
+}
+
+}  // namespace strata::stats
+
+namespace strata::stats {
+
+double successive_difference_half_width(const std::vector<double>& replicates, double confidence) {
+  const size_t n = replicates.size();
+  if (n < 2) return 0.0;
+  // Half the squared differences of neighbours estimate what the sum of squares about the mean
+  // does for exchangeable batches: E[sum (r_i+1 - r_i)^2] = 2 (n - 1) var, E[sum (r_i - mean)^2]
+  // = (n - 1) var.
+  double ss = 0.0;
+  for (size_t i = 1; i < n; ++i) ss += (replicates[i] - replicates[i - 1]) * (replicates[i] - replicates[i - 1]);
+  ss *= 0.5;
+  // The mean square successive difference's variance is 1.5 times the sample variance's (for
+  // independent normal batches), so it carries about two thirds of the degrees of freedom.
+  const unsigned df = std::max(1u, static_cast<unsigned>(std::lround(2.0 * double(n - 1) / 3.0)));
+  const double t = student_t_quantile(0.5 + 0.5 * confidence, df);
   return t * std::sqrt(ss * double(n - 1) / double(n));
 }
 

@@ -14,13 +14,17 @@
 // estimator (every count times the frame's exact basis over the weighted measured basis),
 // which is what the report extrapolates from; with one period every weight is 1.
 //
-// The interval of any statistic (a count, a ratio, a formula) is the delete-one-batch
-// jackknife: the frame is re-estimated as if each batch in turn had not been measured (its
+// The interval of any statistic (a count, a ratio, a formula) comes from delete-one-batch
+// replicates: the frame is re-estimated as if each batch in turn had not been measured (its
 // counts and its measured denominators removed, the exact totals kept), through the same
-// scaling and derivation as the report; the spread of those estimates gives the standard
-// error, and Student's t with batches - 1 degrees of freedom the half-width.
+// scaling and derivation as the report. How their spread becomes a standard error is the
+// IntervalMethod: the jackknife treats the batches as exchangeable, so a trend over the frame
+// (a STRaTA frame's DRAM bytes per instruction rise several times from its camera rays to its
+// last bounces) counts as variance, although windows spread evenly over the frame follow a
+// trend closely; successive differences count only how much neighbouring batches differ.
 #pragma once
 
+#include "model/stats/interval_method.h"
 #include "model/stats/stat_values.h"
 
 #include <cstddef>
@@ -30,10 +34,13 @@
 
 namespace strata::stats {
 
+
 // The half-width at `confidence` of a jackknife estimate from its delete-one replicates:
 // Student's t with n - 1 degrees of freedom times sqrt((n - 1) / n x their sum of squares).
 // 0 for fewer than 2 replicates.
 double jackknife_half_width(const std::vector<double>& replicates, double confidence);
+// The same by successive differences: `replicates` in the batches' order. 0 for fewer than 2.
+double successive_difference_half_width(const std::vector<double>& replicates, double confidence);
 
 class BatchMeans {
  public:
@@ -41,7 +48,8 @@ class BatchMeans {
   // extrapolated counts, and the measured denominators); everything else is an exact total
   // that stays whole in every replicate.
   using Selector = std::function<bool(const std::string&, const Values::Stat&)>;
-  BatchMeans(Selector measured, size_t max_batches = 32);
+  BatchMeans(Selector measured, size_t max_batches = 32, IntervalMethod method = IntervalMethod::kJackknife);
+  IntervalMethod method() const { return method_; }
 
   // The raw tree as of the end of a window (cumulative since the frame began), and the weight
   // of its counts.
@@ -59,7 +67,7 @@ class BatchMeans {
   size_t batches(const Values& total) const;
 
   // For each element of measure(tree), the half-width at `confidence` (e.g. 0.95) of its
-  // jackknife estimate. `measure` gets the weighted totals less one batch and must scale and derive
+  // estimate, by the method. `measure` gets the weighted totals less one batch and must scale and derive
   // them as the report does, then read the figures of interest. Empty when there are fewer
   // than 2 batches (no interval can be given).
   std::vector<double> half_widths(const Values& total, const std::function<std::vector<double>(Values)>& measure,
@@ -70,6 +78,7 @@ class BatchMeans {
 
   Selector measured_;
   size_t max_batches_;
+  IntervalMethod method_;
   size_t windows_ = 0;
   size_t per_batch_ = 1;       // windows in each full batch
   size_t in_current_ = 0;      // windows in the batch being filled

@@ -172,5 +172,70 @@ TEST(BatchMeans, FewerThanTwoBatchesGiveNoInterval) {
   EXPECT_TRUE(b.half_widths(Values::snapshot(t.root), [](Values) { return std::vector<double>{1.0}; }, 0.95).empty());
 }
 
+
+// Successive differences (interval_method.h) by hand: half the squared differences of
+// neighbouring replicates in place of the squares about their mean, and t with 2(n - 1)/3
+// degrees of freedom.
+TEST(SuccessiveDifferences, MatchAHandComputation) {
+  const std::vector<double> r = {10, 12, 11, 15, 14, 13, 16};
+  double ss = 0;
+  for (size_t i = 1; i < r.size(); ++i) ss += (r[i] - r[i - 1]) * (r[i] - r[i - 1]);
+  const double expected = student_t_quantile(0.975, 4) * std::sqrt(0.5 * ss * 6 / 7);  // 2 x 6 / 3 = 4
+  EXPECT_NEAR(successive_difference_half_width(r, 0.95), expected, 1e-12);
+  EXPECT_EQ(successive_difference_half_width({3.0}, 0.95), 0.0);
+  // Two replicates: one difference, one degree of freedom (never 0).
+  EXPECT_NEAR(successive_difference_half_width({1.0, 3.0}, 0.95), student_t_quantile(0.975, 1) * std::sqrt(2.0 * 0.5),
+              1e-12);
+}
+
+// The reason for the method: replicates that trend (a frame whose DRAM bytes per instruction
+// rise from its camera rays to its bounces) give the jackknife a wide interval, the successive
+// differences a narrow one; replicates that only scatter give both about the same.
+TEST(SuccessiveDifferences, FollowATrendThatTheJackknifeCountsAsVariance) {
+  std::vector<double> trend, scatter;
+  uint32_t state = 12345;  // a fixed sequence, so the test is deterministic
+  const auto uniform = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24) - 0.5;
+  };
+  for (int i = 0; i < 32; ++i) {
+    trend.push_back(100.0 + 2.0 * i + 0.1 * uniform());
+    scatter.push_back(100.0 + 10.0 * uniform());
+  }
+  EXPECT_LT(successive_difference_half_width(trend, 0.95), 0.1 * jackknife_half_width(trend, 0.95));
+  const double ratio = successive_difference_half_width(scatter, 0.95) / jackknife_half_width(scatter, 0.95);
+  EXPECT_GT(ratio, 0.7);
+  EXPECT_LT(ratio, 1.4);
+}
+
+// BatchMeans takes the method: the same windows, the replicates in the batches' order.
+TEST(BatchMeans, SuccessiveDifferencesOverTheBatchesInTheirOrder) {
+  Tree t;
+  BatchMeans jack(&measured, 32, IntervalMethod::kJackknife);
+  BatchMeans succ(&measured, 32, IntervalMethod::kSuccessiveDifferences);
+  EXPECT_EQ(succ.method(), IntervalMethod::kSuccessiveDifferences);
+  // Misses per instruction rising window by window.
+  for (int i = 0; i < 8; ++i) {
+    t.retired += 1000;
+    t.measured += 100;
+    t.misses += 10 + 5 * i;
+    jack.add_window(Values::snapshot(t.root));
+    succ.add_window(Values::snapshot(t.root));
+  }
+  const Values total = Values::snapshot(t.root);
+  const auto misses = [](Values r) {
+    finish(r);
+    return std::vector<double>{r.number("memory.misses")};
+  };
+  const double j = jack.half_widths(total, misses, 0.95).at(0);
+  const double s = succ.half_widths(total, misses, 0.95).at(0);
+  // The replicates by hand, in window order.
+  std::vector<double> reps;
+  for (int i = 0; i < 8; ++i) reps.push_back(double(std::llround((double(t.misses) - (10.0 + 5 * i)) * 8000.0 / 700.0)));
+  EXPECT_NEAR(j, jackknife_half_width(reps, 0.95), 1e-9);
+  EXPECT_NEAR(s, successive_difference_half_width(reps, 0.95), 1e-9);
+  EXPECT_LT(s, 0.5 * j);
+}
+
 }  // namespace
 }  // namespace strata::stats
