@@ -151,7 +151,7 @@ std::vector<double> WindowSampler::relative_half_widths(uint64_t now, const stat
   return relative;
 }
 
-double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t recent) {
+double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t recent, stats::IntervalMethod method) {
   double c = 0, m = 0;
   for (const Window& w : windows) {
     c += w.weight * w.value;
@@ -159,17 +159,37 @@ double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t r
   }
   if (windows.empty() || !(m > 0)) return 0.0;
   const double ratio = c / m;
-  double past = 0, last = 0;
+  const auto residual = [&](size_t i) { return windows[i].value - ratio * windows[i].basis; };
   const size_t first_recent = windows.size() - std::min(std::max<size_t>(recent, 1), windows.size());
-  for (size_t i = 0; i < windows.size(); ++i) {
-    const double residual = windows[i].value - ratio * windows[i].basis;
-    past += windows[i].weight * windows[i].weight * residual * residual;
-    if (i >= first_recent) last += residual * residual;
+  double past = 0, last = 0;
+  size_t terms = 0, recent_terms = 0;
+  if (method == stats::IntervalMethod::kJackknife) {
+    for (size_t i = 0; i < windows.size(); ++i) {
+      const double r = residual(i);
+      past += windows[i].weight * windows[i].weight * r * r;
+      if (i >= first_recent) last += r * r, ++recent_terms;
+    }
+    terms = windows.size();
+  } else {
+    // The interval counts how much neighbours differ, not how far each lies from the ratio: a
+    // trend in the residuals (DRAM bytes per instruction rising over a STRaTA frame) adds only
+    // its slope. Half the squared difference of neighbours stands for one window's e^2; the
+    // n - 1 differences are scaled to n windows below.
+    for (size_t i = 1; i < windows.size(); ++i) {
+      const double d = windows[i].weight * residual(i) - windows[i - 1].weight * residual(i - 1);
+      past += 0.5 * d * d;
+      if (i >= first_recent) {
+        const double u = residual(i) - residual(i - 1);
+        last += 0.5 * u * u, ++recent_terms;
+      }
+    }
+    terms = windows.size() - 1;
+    if (terms > 0) past *= double(windows.size()) / double(terms);
   }
-  last /= double(windows.size() - first_recent);
-  // Recent windows all on the ratio: nothing predicts their spread, so plan as for equal
-  // spreads (the sum of weight^2), not for none.
-  if (!(last > 0)) {
+  if (recent_terms > 0) last /= double(recent_terms);
+  // Recent windows all on the ratio (or too few to differ): nothing predicts their spread, so
+  // plan as for equal spreads (the sum of weight^2), not for none.
+  if (!(last > 0) || terms == 0) {
     double squares = 0;
     for (const Window& w : windows) squares += w.weight * w.weight;
     return squares;
@@ -219,7 +239,7 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
     if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
     const double gain = target * (frame / base) / (relative[k] * weight_sum_);
     const double weight =
-        remaining > 0 ? spread_weight(windows_[k], kRecentWindows) * (gain * gain - 1.0) / remaining : 0.0;
+        remaining > 0 ? spread_weight(windows_[k], kRecentWindows, config_.timing.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
     chosen = std::min(chosen, std::max(0.0, weight) * base);
   }
   if (!std::isfinite(chosen)) return;

@@ -75,8 +75,11 @@ class WindowSampler : public sc_core::sc_module {
   // returns the windows' sum of weight^2 x residual^2 over the mean residual^2 of the last
   // `recent`: for windows of one spread it is the sum of weight^2 they would have under the
   // old rule; when the spread has fallen since the frame's start (cold caches, the first
-  // rays), it is larger, and the period may grow sooner.
-  static double spread_weight(const std::vector<Window>& windows, size_t recent);
+  // rays), it is larger, and the period may grow sooner. By successive differences (the
+  // interval's default method), residual^2 is half the squared difference of neighbouring
+  // windows' (weighted) residuals, as the interval will count them.
+  static double spread_weight(const std::vector<Window>& windows, size_t recent,
+                              stats::IntervalMethod method = stats::IntervalMethod::kJackknife);
   // The weight of the frame's tail, the window the frame ended in: it stands for the cycles
   // from its start to the frame's end, not for a whole period (a frame that ends a few cycles
   // into a 1.2 M-cycle period would otherwise weigh its drain, where few TPs still run, as a

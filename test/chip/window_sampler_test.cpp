@@ -56,6 +56,28 @@ TEST(WindowSampler, RecentWindowsOnTheRatioPlanAsForEqualSpreads) {
   EXPECT_DOUBLE_EQ(WindowSampler::spread_weight(few, 8), 4.0);
 }
 
+using strata::stats::IntervalMethod;
+
+// By successive differences the plan counts how much neighbouring windows differ: windows of
+// one spread still plan as the sum of their squared weights.
+TEST(WindowSampler, BySuccessiveDifferencesWindowsOfOneSpreadPlanAsTheirCount) {
+  std::vector<Window> windows;
+  add_windows(windows, 16, 1.0, 30.0);
+  EXPECT_DOUBLE_EQ(WindowSampler::spread_weight(windows, 8, IntervalMethod::kSuccessiveDifferences), 16.0);
+}
+
+// A trend in the residuals (a STRaTA frame's DRAM bytes per instruction rise over the frame):
+// the jackknife's plan reads the recent windows, far from the frame's ratio, as a spread far
+// larger than the past's and plans for many more windows; successive differences see only the
+// small steps between neighbours, the same in the past and recently.
+TEST(WindowSampler, ATrendIsNotASpreadBySuccessiveDifferences) {
+  std::vector<Window> windows;
+  for (int i = 0; i < 32; ++i) windows.push_back({1.0, 1000.0 + 10.0 * i + (i % 2 ? 1.0 : -1.0), 1000.0});
+  const double successive = WindowSampler::spread_weight(windows, 8, IntervalMethod::kSuccessiveDifferences);
+  EXPECT_NEAR(successive, 32.0, 4.0);
+  EXPECT_LT(WindowSampler::spread_weight(windows, 8, IntervalMethod::kJackknife), 0.6 * successive);
+}
+
 }  // namespace
 
 namespace {
