@@ -56,6 +56,18 @@ def output_folder(text):
     return text
 
 
+def target_error(text):
+    """A relative 95% half-width for sampled timing's error target, as strata-sim takes
+    timing.sample_target_error (0.001..0.5; 0, "off", is the option left out)."""
+    try:
+        e = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number")
+    if not 0.001 <= e <= 0.5:
+        raise argparse.ArgumentTypeError(f"must be 0.001..0.5 (a relative half-width, e.g. 0.02), got {text}")
+    return e
+
+
 def name_list(text):
     """Comma-separated names (empty entries, e.g. of a trailing comma, dropped): at least one,
     none twice (a name listed twice would be the same frames twice, run once)."""

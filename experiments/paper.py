@@ -7,7 +7,8 @@ draws the figure as a PNG. Each experiment's frames are a sweep spec in experime
 into the same run folders, with the spec's generic plots; this command draws the paper's.
 
     experiments/paper.py EXPERIMENT|all [--res 128x128] [--scenes sibenik,hairball,vegetation]
-                         [--jobs N] [--out out/experiments] [--mode lt] [--list]
+                         [--jobs N] [--out out/experiments] [--mode lt]
+                         [--target-error E] [--list]
 
 Experiments:
     fig3-fps-vs-tms      frames/s against TMs (16..128), trax and strata-streams, per scene
@@ -19,10 +20,14 @@ Experiments:
 
 Output: <out>/<experiment>.csv, .json and .png; the frames under <out>/runs/.
 The paper uses 1024x1024 frames: pass --res 1024x1024 (and --mode sampled) on a cluster.
+--mode sampled --target-error 0.02 sets every frame's error target (timing.sample_target_error:
+the 95% intervals of frame cycles, DRAM bytes and L2 accesses within 2%). Sampled figures are
+estimates: the plots draw their 95% intervals as error bars.
 """
 import argparse
 import csv
 import json
+import math
 import os
 import sys
 
@@ -55,6 +60,8 @@ def from_spec(name, args):
             raise sweep.spec.SpecError(f"argument --res: '{args.res}': experiments/specs/{name}.json would also "
                                        f"run {r}; width and height must be 1..{arguments.MAX_SIDE}")
     data["timing_mode"] = args.mode
+    if args.target_error:
+        data.setdefault("fixed", {}).setdefault("set", {})["timing.sample_target_error"] = args.target_error
     return [sweep.with_digest(p) for p in sweep.spec.Spec(path, data).runs()]
 
 
@@ -80,13 +87,34 @@ def val(r, path):
     return sweep.get(r.stats, path)
 
 
+def err(r, path, scale=1.0):
+    """The 95% half-width of a sampled estimate (stats.json's intervals.stats mirrors the tree),
+    times `scale`; 0 for an exact figure or another timing mode."""
+    try:
+        return sweep.get(r.stats, "intervals.stats." + path + ".half_width") * scale
+    except (KeyError, TypeError):
+        return 0.0
+
+
+def line(ax, xs, rs, path, scale=1.0, **kw):
+    """A series with its intervals as error bars (none drawn where every figure is exact)."""
+    ys = [val(r, path) * scale for r in rs]
+    es = [err(r, path, scale) for r in rs]
+    if any(es):
+        ax.errorbar(xs, ys, yerr=es, capsize=3, **kw)
+    else:
+        ax.plot(xs, ys, **kw)
+
+
 def style(design):
     return {"trax": dict(ls="-", marker="o"), "streams": dict(ls="--", marker="s"),
             "pipelines": dict(ls=":", marker="^")}[design]
 
 
 def title(args, what):
-    return f"{what} ({args.res}, {args.mode})"
+    mode = args.mode + (f", target \u00b1{100 * args.target_error:g}%, 95% CI bars" if args.target_error else
+                        ", 95% CI bars" if args.mode == "sampled" else "")
+    return f"{what} ({args.res}, {mode})"
 
 
 def tms_of(r):
@@ -100,8 +128,8 @@ def plot_fig3(results, args, png):
         for d in ("trax", "streams"):
             rs = sorted((r for r in results if scene_of(r) == s and design_of(r) == d), key=tms_of)
             if rs:
-                ax.plot([tms_of(r) for r in rs], [val(r, "frame.frames_per_second") for r in rs],
-                        label=f"{s}, {DESIGNS[d]}", **style(d))
+                line(ax, [tms_of(r) for r in rs], rs, "frame.frames_per_second", label=f"{s}, {DESIGNS[d]}",
+                     **style(d))
     ax.set_xlabel("TMs (32 TPs each)")
     ax.set_ylabel("frames per second [1/s]")
     ax.set_title(title(args, "Frame rate against chip size (paper Fig. 3)"))
@@ -138,28 +166,26 @@ def size_panels(results, args, png, suptitle, ylabel, draw, log_y=False):
         ax.set_title(s)
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7)
-    fig.suptitle(title(args, suptitle))
+    fig.suptitle(title(args, suptitle), fontsize=10, wrap=True)
     fig.tight_layout()
     fig.savefig(png, dpi=120)
 
 
 def plot_fig4(results, args, png):
     def draw(ax, d, xs, rs):
-        ax.plot(xs, [val(r, "memory.l2.accesses") for r in rs], label=f"{DESIGNS[d]}: L1 misses (L2 accesses)",
-                **style(d))
+        line(ax, xs, rs, "memory.l2.accesses", label=f"{DESIGNS[d]}: L1 misses (L2 accesses)", **style(d))
         if d == "streams":
-            ax.plot(xs, [val(r, "memory.stream.accesses") for r in rs], label=f"{DESIGNS[d]}: stream accesses",
-                    ls="-.", marker="x")
+            line(ax, xs, rs, "memory.stream.accesses", label=f"{DESIGNS[d]}: stream accesses", ls="-.", marker="x")
     size_panels(results, args, png, "On-chip traffic against L2 / stream size (paper Fig. 4)",
                 "accesses per frame [count]", draw, log_y=True)
 
 
 def plot_fig5_7(results, args, png):
     def draw(ax, d, xs, rs):
-        ax.plot(xs, [val(r, "energy_nj.l2_and_stream") * 1e-6 for r in rs],
-                label=f"{DESIGNS[d]}: {'L2' if d == 'trax' else 'L2 + stream'}", **style(d))
-        ax.plot(xs, [val(r, "energy_nj.dram") * 1e-6 for r in rs], label=f"{DESIGNS[d]}: DRAM",
-                ls=style(d)["ls"], marker="D", alpha=0.7)
+        line(ax, xs, rs, "energy_nj.l2_and_stream", 1e-6,
+             label=f"{DESIGNS[d]}: {'L2' if d == 'trax' else 'L2 + stream'}", **style(d))
+        line(ax, xs, rs, "energy_nj.dram", 1e-6, label=f"{DESIGNS[d]}: DRAM", ls=style(d)["ls"], marker="D",
+             alpha=0.7)
     size_panels(results, args, png, "Memory energy against L2 / stream size (paper Figs. 5-7)",
                 "energy per frame [mJ]", draw)
 
@@ -170,14 +196,15 @@ def plot_table2(results, args, png):
     width = 0.8 / len(DESIGNS)
     for ax, (key, label) in zip(axes, (("instruction_fetch", "instruction fetch"), ("register_file", "register file"))):
         for i, d in enumerate(DESIGNS):
-            ys, pct = [], []
+            ys, es, pct = [], [], []
             for s in args.scenes:
                 r = next(r for r in results if scene_of(r) == s and design_of(r) == d)
                 base = next(r for r in results if scene_of(r) == s and design_of(r) == "trax")
                 ys.append(val(r, f"energy_nj.{key}") * 1e-9)
+                es.append(err(r, f"energy_nj.{key}", 1e-9))
                 pct.append(100.0 * val(r, f"energy_nj.{key}") / val(base, f"energy_nj.{key}"))
             xs = [j + i * width for j in range(len(args.scenes))]
-            bars = ax.bar(xs, ys, width, label=DESIGNS[d])
+            bars = ax.bar(xs, ys, width, label=DESIGNS[d], yerr=es if any(es) else None, capsize=3)
             for b, p in zip(bars, pct):
                 ax.annotate(f"{p:.0f}%", (b.get_x() + b.get_width() / 2, b.get_height()), ha="center",
                             va="bottom", fontsize=7)
@@ -194,10 +221,11 @@ def plot_dram_by_class(results, args, png):
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.5))
     labels, bottoms = [], []
-    bars = []
+    bars, runs = [], []
     for s in args.scenes:
         for d in DESIGNS:
             r = next(r for r in results if scene_of(r) == s and design_of(r) == d)
+            runs.append(r)
             labels.append(f"{s}\n{d}")
             bars.append([val(r, f"memory.dram.by_data.{c}.bytes") * 1e-6 for c in CLASSES])
     bottoms = [0.0] * len(bars)
@@ -207,6 +235,11 @@ def plot_dram_by_class(results, args, png):
             continue
         ax.bar(range(len(bars)), heights, bottom=bottoms, label=c.replace("_", " "))
         bottoms = [x + y for x, y in zip(bottoms, heights)]
+    # The total's interval on top of each stack (the classes' own are in the CSV).
+    es = [err(r, "memory.dram.bytes", 1e-6) for r in runs]
+    if any(es):
+        ax.errorbar(range(len(bars)), [val(r, "memory.dram.bytes") * 1e-6 for r in runs], yerr=es, fmt="none",
+                    ecolor="black", capsize=3, label="total, 95% CI")
     ax.set_xticks(range(len(bars)), labels, fontsize=8)
     ax.set_ylabel("DRAM traffic per frame [MB]")
     ax.set_title(title(args, "DRAM traffic by data class"))
@@ -221,12 +254,17 @@ def plot_size_check(results, args, png):
     for res in sorted({r.params["res"] for r in results}):
         rs = sorted((r for r in results if r.params["res"] == res), key=tms_of)
         base = rs[-1]
-        ax.plot([tms_of(r) for r in rs],
-                [val(r, "frame.frames_per_second") / val(base, "frame.frames_per_second") for r in rs],
-                marker="o", label=f"{res}")
+        fps = "frame.frames_per_second"
+        ys = [val(r, fps) / val(base, fps) for r in rs]
+        # A ratio of two independent estimates: their relative half-widths added in quadrature.
+        rel = [math.hypot(err(r, fps) / val(r, fps), err(base, fps) / val(base, fps)) if r is not base
+               else 0.0 for r in rs]
+        es = [y * e for y, e in zip(ys, rel)]
+        ax.errorbar([tms_of(r) for r in rs], ys, yerr=es if any(es) else None, capsize=3, marker="o",
+                    label=f"{res}")
     ax.set_xlabel("TMs")
     ax.set_ylabel("frame rate, relative to 128 TMs")
-    ax.set_title(f"Sibenik, trax: does the trend hold at 2x the resolution? ({args.mode})")
+    ax.set_title(title(args, "Sibenik, trax: does the trend hold at 2x the resolution?"))
     ax.grid(alpha=0.3)
     ax.legend()
     fig.tight_layout()
@@ -292,10 +330,15 @@ def main():
                     help="frames run at once, 1 or more (default: the number of cores)")
     ap.add_argument("--out", default=os.path.join(sweep.ROOT, "out", "experiments"), type=arguments.output_folder,
                     help="output folder")
+    ap.add_argument("--target-error", type=arguments.target_error, default=None,
+                    help="sampled mode: every frame's error target, the 95%% relative half-width asked of frame "
+                         "cycles, DRAM bytes and L2 accesses (0.001..0.5, e.g. 0.02)")
     ap.add_argument("--list", action="store_true", help="list the experiments and their frame counts")
     ap.add_argument("--collect", action="store_true",
                     help="run nothing: write the tables of the frames that finished (plots only when all did)")
     args = ap.parse_args()
+    if args.target_error and args.mode != "sampled":
+        ap.error(f"argument --target-error: an error target is for --mode sampled, not {args.mode}")
     if args.list or not args.experiment:
         frames = plan(EXPERIMENTS, args, ap)
         for name, (spec, _) in EXPERIMENTS.items():

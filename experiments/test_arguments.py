@@ -103,6 +103,15 @@ class PaperTest(Fixture):
             with self.subTest(scenes=scenes):
                 self.assert_refused(self.paper("all", "--scenes", scenes, "--out", self.out), "--scenes")
 
+    def test_an_error_target_must_be_a_relative_half_width_for_sampled_mode(self):
+        for target in ("0", "0.6", "two", "-0.02"):
+            with self.subTest(target=target):
+                self.assert_refused(self.paper("all", "--mode", "sampled", "--target-error", target, "--out", self.out),
+                                    "--target-error")
+        result = self.paper("all", "--mode", "lt", "--target-error", "0.02", "--out", self.out)
+        self.assert_refused(result, "--target-error")
+        self.assertIn("for --mode sampled", result.stderr)
+
     def test_good_arguments_pass(self):
         result = self.paper("--list", "--res", "256x256", "--jobs", "1", "--scenes", "sibenik", "--out", self.out)
         self.assertEqual(result.returncode, 0, result.stderr)
