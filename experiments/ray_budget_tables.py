@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""The tables of issue 34 (the ray budget) from the sweeps' results, as Markdown:
+"""The tables of issues 34 (the ray budget) and 35 (the paper's scale) from the sweeps'
+results, as Markdown:
 
-  experiments/ray_budget_tables.py budget [OUT]   ray-budget: stream memory size x path state
-  experiments/ray_budget_tables.py scale [OUT]    scale-check (sampled) and scale-check-lt
+  experiments/ray_budget_tables.py budget [OUT]    ray-budget: stream memory size x path state
+  experiments/ray_budget_tables.py scale [OUT]     scale-check (sampled) and scale-check-lt
+  experiments/ray_budget_tables.py headline [OUT]  headline-1024: Sibenik 1024x1024, every design
+                                                   and path state (the frames finished so far)
 
 OUT is the experiments folder (default out/experiments). Each table names its timing mode; a
 sampled figure carries its 95% half-width where the run reported one. Standard library only.
 """
 import csv
-import json
 import os
 import sys
 
@@ -39,18 +41,9 @@ def param(row, name):
 
 
 def half_width(row, path):
-    """A sampled run's 95% half-width (relative) of `path`, from its stats.json, or None."""
-    run = row.get("run_dir") or row.get("run") or ""
-    stats = os.path.join(run, "out", "stats.json") if run else ""
-    if not stats or not os.path.exists(stats):
-        return None
-    with open(stats) as f:
-        node = json.load(f).get("intervals", {}).get("stats", {})
-    for part in path.split("."):
-        if not isinstance(node, dict) or part not in node:
-            return None
-        node = node[part]
-    return node if isinstance(node, (int, float)) else None
+    """A sampled run's 95% relative half-width of `path` (results.csv's intervals columns), or
+    None (an exact figure, or another timing mode)."""
+    return col(row, "intervals.stats." + path + ".relative")
 
 
 def design_of(row):
@@ -126,11 +119,42 @@ def scale(out):
             fmt(per_ray(r, "frame.cycles"), 2), pm("frame.cycles"), " / ".join(rel)))
 
 
+def headline(out):
+    table = [r for r in rows(out, "headline-1024") if r.get("status", "done") == "done" and col(r, "frame.cycles")]
+    print("Sibenik 1024x1024, 128 TMs, shipped configs, sampled timing at a 2% error target on frame cycles, "
+          "DRAM bytes and L2 accesses (`experiments/specs/headline-1024.json`); each estimate with its 95% "
+          "half-width. Rays per session are the sampled run's own (its fast-forward's sessions; "
+          "docs/sampled-timing.md, \"Treelet sessions\").\n")
+    print("| design | path state | frame [M cycles] | DRAM [MB] | L2 accesses [M] | stream accesses [M] "
+          "| rays in flight: mean / steady | rays / session | energy [mJ] | wall [s] |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    order = {"trax": 0, "strata-streams": 1, "strata-pipelines": 2}
+    states = {"compact": 0, "on-chip": 1, "dram": 2}
+    table.sort(key=lambda r: (order.get(design_of(r), 9), states.get(param(r, "design.path_state"), 9)))
+
+    def est(r, path, digits, scale):
+        v, hw = col(r, path), half_width(r, path)
+        return fmt(v, digits, scale) + ("" if not hw else " ±<0.1%" if hw < 0.0005 else f" ±{100 * hw:.1f}%")
+    for r in table:
+        streams = design_of(r) != "trax"
+        print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |".format(
+            design_of(r), param(r, "design.path_state") or "-", est(r, "frame.cycles", 3, 1e-6),
+            est(r, "memory.dram.bytes", 1, 1e-6), est(r, "memory.l2.accesses", 2, 1e-6),
+            est(r, "memory.stream.accesses", 2, 1e-6) if streams else "-",
+            (fmt(col(r, "treelets.rays_in_flight.mean"), 0) + " / " +
+             fmt(col(r, "treelets.rays_in_flight.steady_state"), 0)) if streams else "-",
+            est(r, "treelets.sessions.rays_per_session", 1, 1.0) if streams else "-",
+            est(r, "energy_nj.total", 1, 1e-6), fmt(col(r, "simulator wall"), 0)))
+
+
+TABLES = {"budget": budget, "scale": scale, "headline": headline}
+
+
 def main():
-    if len(sys.argv) < 2 or sys.argv[1] not in ("budget", "scale"):
+    if len(sys.argv) < 2 or sys.argv[1] not in TABLES:
         sys.exit(__doc__)
     out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "out", "experiments")
-    (budget if sys.argv[1] == "budget" else scale)(out)
+    TABLES[sys.argv[1]](out)
 
 
 if __name__ == "__main__":
