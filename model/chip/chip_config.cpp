@@ -52,7 +52,13 @@ void checked(const char* section, F&& validate) {
   try {
     validate();
   } catch (const std::invalid_argument& e) {
-    throw ConfigError(std::string(section) + ": " + e.what());
+    // The module's validate() names its fields from its own name ("dram.channels: ..."); as
+    // the config spells them, that is "memory.dram.channels: ...".
+    const std::string s = section, what = e.what();
+    const size_t dot = s.rfind('.');
+    const std::string own = s.substr(dot == std::string::npos ? 0 : dot + 1) + ".";
+    if (what.compare(0, own.size(), own) == 0) throw ConfigError(s.substr(0, s.size() - own.size() + 1) + what);
+    throw ConfigError(s + ": " + what);
   }
 }
 

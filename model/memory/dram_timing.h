@@ -3,8 +3,7 @@
 // a controller rounds a minimum time to whole clocks) by DramTiming::at(). The defaults are the
 // GDDR5 preset: 8 Gbit/s per pin, x32 devices, one device per channel, so 8 channels give
 // 8 x 32 GB/s = 256 GB/s, the STRaTA paper's DRAM bandwidth. docs/memory-system.md ("Banked
-// DRAM") gives where each value comes from, and says which are not yet checked against a
-// datasheet's AC table. validate() checks the rules the standard sets between them
+// DRAM") gives where each value comes from. validate() checks the rules the standard sets between them
 // (tRC >= tRAS + tRP, ...) and names the field that breaks one.
 #pragma once
 
@@ -31,23 +30,27 @@ struct DramTimingConfig {
   bool hash_banks = true;
   RowPolicy row_policy = RowPolicy::kOpen;
 
-  // Minimum times, ns. GDDR5 at 8 Gbit/s: CK 2 GHz, tCK 0.5 ns.
-  double t_rcd_ns = 14.0;   // ACT to RD/WR, same bank
-  double t_rp_ns = 14.0;    // PRE to ACT, same bank
+  // Minimum times, ns. GDDR5 at 8 Gbit/s: CK 2 GHz, tCK 0.5 ns. The array timings are SK
+  // hynix's H5GQ1H24AFR datasheet (as gem5's GDDR5_4000_2x32 transcribes it; Ramulator's
+  // GDDR5 speed table keeps the same ns from 4 to 7 Gbit/s, so they are taken at 8 as well);
+  // tCK multiples and refresh from Micron's 8 Gb MT51J256M32 brief. docs/memory-system.md,
+  // "Banked DRAM", gives each source.
+  double t_rcd_ns = 12.0;   // ACT to RD/WR, same bank
+  double t_rp_ns = 12.0;    // PRE to ACT, same bank
   double t_cl_ns = 12.0;    // RD to first data (CL 24 tCK)
   double t_cwl_ns = 3.5;    // WR to first data (WL 7 tCK)
-  double t_ras_ns = 32.0;   // ACT to PRE, same bank
-  double t_rc_ns = 46.0;    // ACT to ACT, same bank
+  double t_ras_ns = 28.0;   // ACT to PRE, same bank
+  double t_rc_ns = 40.0;    // ACT to ACT, same bank (tRAS + tRP)
   double t_rrd_s_ns = 5.5;  // ACT to ACT, other bank group of the rank
-  double t_rrd_l_ns = 6.0;  // ACT to ACT, same bank group
+  double t_rrd_l_ns = 5.5;  // ACT to ACT, same bank group
   double t_faw_ns = 23.0;   // at most four ACTs per rank in any window this long
   double t_ccd_s_ns = 1.0;  // RD to RD (WR to WR), other bank group (2 tCK)
   double t_ccd_l_ns = 1.5;  // ... same bank group (3 tCK)
   double t_wr_ns = 12.0;    // end of write data to PRE
   double t_wtr_ns = 5.0;    // end of write data to RD, same rank
-  double t_rtp_ns = 2.0;    // RD to PRE
-  double t_refi_ns = 1900.0;  // average interval between all-bank refreshes of a rank
-  double t_rfc_ns = 110.0;    // REF to the next command: the whole rank is busy
+  double t_rtp_ns = 1.0;    // RD to PRE (2 tCK)
+  double t_refi_ns = 1953.125;  // average interval between all-bank refreshes: 32 ms / 16,384
+  double t_rfc_ns = 184.0;      // REF to the next command: the whole rank is busy (Ramulator's)
   // Added to every request before its first command: the controller's queues and PHY, and
   // the wires to the device. 0: the request reaches the device's command bus at once.
   double controller_ns = 0.0;
