@@ -124,7 +124,12 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
     e.visit([&](const std::string&, const stats::Values::Stat& s) { out.push_back(s.null ? 0.0 : s.value()); });
     return out;
   };
-  const std::vector<double> hw = b.half_widths(raw, measure, kConfidence);
+  // How much of the frame the windows measured: reported, but not used to narrow the
+  // intervals (docs/sampled-timing.md, "Confidence intervals": no finite-population correction).
+  const double cycles = raw.number("frame.cycles");
+  measured_share_ = cycles > 0 ? std::clamp(raw.number("sampling.measured_cycles") / cycles, 0.0, 1.0) : 0.0;
+  std::vector<std::vector<double>> replicates;
+  const std::vector<double> hw = b.half_widths(raw, measure, kConfidence, &replicates);
   if (hw.empty()) {
     interval_note_ = "no confidence intervals: the frame spanned " + std::to_string(batches_) +
                      " sampling window(s); at least 2 are needed (lower timing.sample_period_cycles)";
@@ -132,6 +137,14 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   }
   for (size_t i = 0; i < paths.size(); ++i)
     if (hw[i] > 0 && std::isfinite(hw[i])) half_widths_[paths[i]] = hw[i];
+  // The replicates of the figures a comparison reads (and the error target's), so a wide
+  // interval can be traced to the batches that make it.
+  std::vector<std::string> shown = {"frame.cycles", "memory.dram.bytes", "memory.l2.accesses"};
+  if (chip_.config().timing.sample_target_error > 0)
+    for (const std::string& t : sample_target_list(chip_.config().timing.sample_target_stats))
+      if (std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
+  for (size_t i = 0; i < paths.size(); ++i)
+    if (std::find(shown.begin(), shown.end(), paths[i]) != shown.end()) replicates_[paths[i]] = replicates[i];
 }
 
 std::string FrameReport::pm(const std::string& path) const {
@@ -164,7 +177,14 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
                                         stats::interval_method_name(chip_.window_batches()->method()) +
                                         ", Student t (docs/sampled-timing.md)"},
                          {"windows", windows_},
-                         {"batches", batches_}};
+                         {"batches", batches_},
+                         {"measured_share", measured_share_}};
+    if (!replicates_.empty()) {
+      // Each figure re-estimated without one batch, in batch order (the frame's start first).
+      nlohmann::json r = nlohmann::json::object();
+      for (const auto& [path, values] : replicates_) r[path] = values;
+      iv["replicates"] = r;
+    }
     if (!interval_note_.empty()) iv["note"] = interval_note_;
     if (cfg.timing.sample_target_error > 0) {
       // Each named statistic's interval against the target (-1: no interval was given).
@@ -326,10 +346,10 @@ std::string FrameReport::summary() const {
     if (!interval_note_.empty())
       s += format("warning        %s\n", interval_note_.c_str());
     else
-      s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (%s); figures without "
-                  "a \u00b1 are exact [sampled]\n",
+      s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (%s; %.1f%% of the frame "
+                  "measured); figures without a \u00b1 are exact [sampled]\n",
                   100 * kConfidence, windows_, batches_,
-                  stats::interval_method_name(chip_.window_batches()->method()));
+                  stats::interval_method_name(chip_.window_batches()->method()), 100 * measured_share_);
     if (cfg.timing.sample_target_error > 0) s += target_lines();
   }
   return s;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
+#include <vector>
 #include <set>
 #include <string>
 
@@ -54,6 +55,8 @@ class FrameReport {
   std::map<std::string, double> half_widths_;
   std::string interval_note_;
   size_t batches_ = 0, windows_ = 0;
+  double measured_share_ = 0;  // of the frame's cycles, by the windows' measured parts
+  std::map<std::string, std::vector<double>> replicates_;  // of the figures a comparison reads
 
   // Sampled timing, a finished frame: its windows weight the estimates and give them intervals.
   bool has_intervals() const { return chip_.window_batches() != nullptr && !interrupted_; }

@@ -79,7 +79,8 @@ Values BatchMeans::weighted_total(const Values& total) const {
 
 std::vector<double> BatchMeans::half_widths(const Values& total,
                                             const std::function<std::vector<double>(Values)>& measure,
-                                            double confidence) const {
+                                            double confidence,
+                                            std::vector<std::vector<double>>* replicates_out) const {
   const std::vector<Values> batches = all_batches(total);
   const size_t n = batches.size();
   if (n < 2) return {};
@@ -95,10 +96,12 @@ std::vector<double> BatchMeans::half_widths(const Values& total,
   }
   std::vector<double> out(replicates.front().size(), 0.0);
   std::vector<double> column(n);
+  if (replicates_out) replicates_out->assign(out.size(), std::vector<double>(n));
   for (size_t k = 0; k < out.size(); ++k) {
     for (size_t i = 0; i < n; ++i) column[i] = replicates[i][k];
     out[k] = method_ == IntervalMethod::kJackknife ? jackknife_half_width(column, confidence)
                                                    : successive_difference_half_width(column, confidence);
+    if (replicates_out) (*replicates_out)[k] = column;
   }
   return out;
 }

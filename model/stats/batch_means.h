@@ -70,8 +70,10 @@ class BatchMeans {
   // estimate, by the method. `measure` gets the weighted totals less one batch and must scale and derive
   // them as the report does, then read the figures of interest. Empty when there are fewer
   // than 2 batches (no interval can be given).
+  // `replicates`, if given, receives each figure's delete-one-batch estimates, in batch order.
+  // No finite-population correction (docs/sampled-timing.md, "Confidence intervals").
   std::vector<double> half_widths(const Values& total, const std::function<std::vector<double>(Values)>& measure,
-                                  double confidence) const;
+                                  double confidence, std::vector<std::vector<double>>* replicates = nullptr) const;
 
  private:
   std::vector<Values> all_batches(const Values& total) const;

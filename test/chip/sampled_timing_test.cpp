@@ -397,8 +397,17 @@ TEST(SampledTimingIntervals, TheMethodChangesTheIntervalsNotTheEstimates) {
   EXPECT_GT(half_width(succ, "/frame/cycles"), 0.0);
   EXPECT_NE(jack["intervals"]["method"].get<std::string>().find("by jackknife"), std::string::npos);
   EXPECT_NE(succ["intervals"]["method"].get<std::string>().find("by successive differences"), std::string::npos);
-  EXPECT_NE(jack_log.find("batches (jackknife)"), std::string::npos) << jack_log;
-  EXPECT_NE(succ_log.find("batches (successive differences)"), std::string::npos) << succ_log;
+  // The share of the frame measured, and the replicates behind the main figures' intervals,
+  // one per batch.
+  const double share = succ["intervals"]["measured_share"].get<double>();
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  EXPECT_NEAR(share, succ["sampling"]["measured_cycles"].get<double>() / succ["frame"]["cycles"].get<double>(), 1e-9);
+  for (const char* path : {"frame.cycles", "memory.dram.bytes", "memory.l2.accesses"})
+    EXPECT_EQ(succ["intervals"]["replicates"][path].size(), succ["intervals"]["batches"].get<size_t>()) << path;
+  EXPECT_NE(jack_log.find("batches (jackknife; "), std::string::npos) << jack_log;
+  EXPECT_NE(succ_log.find("batches (successive differences; "), std::string::npos) << succ_log;
+  EXPECT_NE(succ_log.find("% of the frame measured)"), std::string::npos) << succ_log;
 }
 
 INSTANTIATE_TEST_SUITE_P(Chip, SampledTiming, ::testing::Values("trax", "strata-pipelines"), design_name);

@@ -237,5 +237,32 @@ TEST(BatchMeans, SuccessiveDifferencesOverTheBatchesInTheirOrder) {
   EXPECT_LT(s, 0.5 * j);
 }
 
+// The replicates behind an interval are handed back, in batch order.
+TEST(BatchMeans, TheReplicatesBehindAnIntervalAreHandedBackInBatchOrder) {
+  Tree t;
+  BatchMeans b(&measured, 32, IntervalMethod::kSuccessiveDifferences);
+  const uint64_t m[] = {100, 120, 80, 100, 110, 90};
+  const uint64_t x[] = {10, 15, 6, 9, 12, 8};
+  for (int i = 0; i < 6; ++i) {
+    t.retired += 1000;
+    t.measured += m[i];
+    t.misses += x[i];
+    b.add_window(Values::snapshot(t.root));
+  }
+  const Values total = Values::snapshot(t.root);
+  const auto misses = [](Values r) {
+    finish(r);
+    return std::vector<double>{r.number("memory.misses")};
+  };
+  std::vector<std::vector<double>> reps;
+  const double whole = b.half_widths(total, misses, 0.95, &reps).at(0);
+  EXPECT_GT(whole, 0.0);
+  ASSERT_EQ(reps.size(), 1u);
+  ASSERT_EQ(reps[0].size(), 6u);
+  EXPECT_NEAR(successive_difference_half_width(reps[0], 0.95), whole, 1e-9);
+  // The third replicate drops the third window: its misses and its measured instructions.
+  EXPECT_NEAR(reps[0][2], std::llround((60.0 - 6) * 6000.0 / (600.0 - 80)), 1e-9);
+}
+
 }  // namespace
 }  // namespace strata::stats
