@@ -8,7 +8,7 @@ into the same run folders, with the spec's generic plots; this command draws the
 
     experiments/paper.py EXPERIMENT|all [--res 128x128] [--scenes sibenik,hairball,vegetation]
                          [--jobs N] [--out out/experiments] [--mode lt]
-                         [--target-error E] [--list]
+                         [--target-error E [--target-stats S,...]] [--list]
 
 Experiments:
     fig3-fps-vs-tms      frames/s against TMs (16..128), trax and strata-streams, per scene
@@ -21,8 +21,10 @@ Experiments:
 Output: <out>/<experiment>.csv, .json and .png; the frames under <out>/runs/.
 The paper uses 1024x1024 frames: pass --res 1024x1024 (and --mode sampled) on a cluster.
 --mode sampled --target-error 0.02 sets every frame's error target (timing.sample_target_error:
-the 95% intervals of frame cycles, DRAM bytes and L2 accesses within 2%). Sampled figures are
-estimates: the plots draw their 95% intervals as error bars.
+the 95% intervals of frame cycles, DRAM bytes and L2 accesses within 2%); --target-stats names
+other statistics for it (timing.sample_target_stats, e.g. frame.cycles,memory.l2.accesses: a
+DRAM target that cannot be met drives a STRaTA frame's windows to their densest). Sampled
+figures are estimates: the plots draw their 95% intervals as error bars.
 """
 import argparse
 import csv
@@ -62,6 +64,8 @@ def from_spec(name, args):
     data["timing_mode"] = args.mode
     if args.target_error:
         data.setdefault("fixed", {}).setdefault("set", {})["timing.sample_target_error"] = args.target_error
+    if args.target_stats:
+        data["fixed"]["set"]["timing.sample_target_stats"] = ",".join(args.target_stats)
     return [sweep.with_digest(p) for p in sweep.spec.Spec(path, data).runs()]
 
 
@@ -333,12 +337,17 @@ def main():
     ap.add_argument("--target-error", type=arguments.target_error, default=None,
                     help="sampled mode: every frame's error target, the 95%% relative half-width asked of frame "
                          "cycles, DRAM bytes and L2 accesses (0.001..0.5, e.g. 0.02)")
+    ap.add_argument("--target-stats", type=arguments.name_list, default=None,
+                    help="with --target-error: the statistics it holds for, comma-separated "
+                         "(timing.sample_target_stats; default frame cycles, DRAM bytes and L2 accesses)")
     ap.add_argument("--list", action="store_true", help="list the experiments and their frame counts")
     ap.add_argument("--collect", action="store_true",
                     help="run nothing: write the tables of the frames that finished (plots only when all did)")
     args = ap.parse_args()
     if args.target_error and args.mode != "sampled":
         ap.error(f"argument --target-error: an error target is for --mode sampled, not {args.mode}")
+    if args.target_stats and not args.target_error:
+        ap.error("argument --target-stats: names the statistics of an error target: give --target-error too")
     if args.list or not args.experiment:
         frames = plan(EXPERIMENTS, args, ap)
         for name, (spec, _) in EXPERIMENTS.items():

@@ -112,6 +112,13 @@ class PaperTest(Fixture):
         self.assert_refused(result, "--target-error")
         self.assertIn("for --mode sampled", result.stderr)
 
+    def test_target_statistics_need_a_target_and_name_each_once(self):
+        result = self.paper("all", "--mode", "sampled", "--target-stats", "frame.cycles", "--out", self.out)
+        self.assert_refused(result, "--target-stats")
+        self.assertIn("give --target-error too", result.stderr)
+        self.assert_refused(self.paper("all", "--mode", "sampled", "--target-error", "0.02", "--target-stats",
+                                       "frame.cycles,frame.cycles", "--out", self.out), "--target-stats")
+
     def test_good_arguments_pass(self):
         result = self.paper("--list", "--res", "256x256", "--jobs", "1", "--scenes", "sibenik", "--out", self.out)
         self.assertEqual(result.returncode, 0, result.stderr)

@@ -35,7 +35,7 @@ def result(design, scene, size, l2, stream=None, half_width=None, dram_nj=5e6):
 
 
 def args(mode, target=None):
-    return argparse.Namespace(scenes=["sibenik"], res="64x64", mode=mode, target_error=target)
+    return argparse.Namespace(scenes=["sibenik"], res="64x64", mode=mode, target_error=target, target_stats=None)
 
 
 class ErrorBars(unittest.TestCase):
@@ -81,11 +81,14 @@ class ErrorBars(unittest.TestCase):
 
 class TargetError(unittest.TestCase):
     def test_the_target_reaches_every_frame_of_a_spec(self):
-        a = argparse.Namespace(scenes=["sibenik"], res="128x128", mode="sampled", target_error=0.02)
+        a = argparse.Namespace(scenes=["sibenik"], res="128x128", mode="sampled", target_error=0.02,
+                               target_stats=["frame.cycles", "memory.l2.accesses"])
         frames = paper.from_spec("equal-sram", a)
         self.assertTrue(frames)
         for p in frames:
             self.assertEqual(p["set"]["timing.sample_target_error"], 0.02)
+            self.assertEqual(p["set"]["timing.sample_target_stats"], "frame.cycles,memory.l2.accesses")
+        a.target_stats = None
         a.target_error = None
         self.assertTrue(all("timing.sample_target_error" not in p["set"] for p in paper.from_spec("equal-sram", a)))
 
