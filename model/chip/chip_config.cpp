@@ -56,8 +56,9 @@ void checked(const char* section, F&& validate) {
     // the config spells them, that is "memory.dram.channels: ...".
     const std::string s = section, what = e.what();
     const size_t dot = s.rfind('.');
-    const std::string own = s.substr(dot == std::string::npos ? 0 : dot + 1) + ".";
-    if (what.compare(0, own.size(), own) == 0) throw ConfigError(s.substr(0, s.size() - own.size() + 1) + what);
+    const std::string parent = dot == std::string::npos ? "" : s.substr(0, dot + 1);  // "memory."
+    const std::string own = s.substr(parent.size()) + ".";                              // "dram."
+    if (what.compare(0, own.size(), own) == 0) throw ConfigError(parent + what);
     throw ConfigError(s + ": " + what);
   }
 }

@@ -106,6 +106,16 @@ std::vector<double> BatchMeans::half_widths(const Values& total,
   return out;
 }
 
+namespace {
+
+// Student's t with `df` degrees of freedom times the standard error sqrt((n - 1) / n x ss), ss
+// the replicates' sum of squares (or what stands for it).
+double from_sum_of_squares(double ss, size_t n, unsigned df, double confidence) {
+  return student_t_quantile(0.5 + 0.5 * confidence, df) * std::sqrt(ss * double(n - 1) / double(n));
+}
+
+}  // namespace
+
 double jackknife_half_width(const std::vector<double>& replicates, double confidence) {
   const size_t n = replicates.size();
   if (n < 2) return 0.0;
@@ -114,13 +124,8 @@ double jackknife_half_width(const std::vector<double>& replicates, double confid
   mean /= double(n);
   double ss = 0.0;
   for (double r : replicates) ss += (r - mean) * (r - mean);
-  const double t = student_t_quantile(0.5 + 0.5 * confidence, static_cast<unsigned>(n - 1));
-  return t * std::sqrt(ss * double(n - 1) / double(n));
+  return from_sum_of_squares(ss, n, static_cast<unsigned>(n - 1), confidence);
 }
-
-}  // namespace strata::stats
-
-namespace strata::stats {
 
 double successive_difference_half_width(const std::vector<double>& replicates, double confidence) {
   const size_t n = replicates.size();
@@ -130,12 +135,11 @@ double successive_difference_half_width(const std::vector<double>& replicates, d
   // = (n - 1) var.
   double ss = 0.0;
   for (size_t i = 1; i < n; ++i) ss += (replicates[i] - replicates[i - 1]) * (replicates[i] - replicates[i - 1]);
-  ss *= 0.5;
   // The mean square successive difference's variance is 1.5 times the sample variance's (for
   // independent normal batches), so it carries about two thirds of the degrees of freedom.
   const unsigned df = std::max(1u, static_cast<unsigned>(std::lround(2.0 * double(n - 1) / 3.0)));
-  const double t = student_t_quantile(0.5 + 0.5 * confidence, df);
-  return t * std::sqrt(ss * double(n - 1) / double(n));
+  return from_sum_of_squares(0.5 * ss, n, df, confidence);
 }
 
 }  // namespace strata::stats
+
