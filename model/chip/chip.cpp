@@ -47,8 +47,10 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   stream_->set_clock(clock);
   interconnect_->set_clock(clock);
 
-  if (config_.timing.mode == transport::TimingMode::kSampled)
+  if (config_.timing.mode == transport::TimingMode::kSampled) {
     schedule_ = std::make_unique<SamplingSchedule>(config_.timing);
+    WindowSampler::plan_head(config_.timing, *schedule_);
+  }
   // The window sampler takes its turn after the TMs' at the same cycle (id config_.tms).
   const bool sampled = config_.timing.mode == transport::TimingMode::kSampled;
   turns_ = std::make_unique<TurnOrder>(config_.tms + (sampled ? 1u : 0u), config_.tms, clock);

@@ -147,6 +147,8 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   check(t.sample_period_cycles != d.sample_period_cycles, "timing.sample_period_cycles");
   check(t.sample_detail_cycles != d.sample_detail_cycles, "timing.sample_detail_cycles");
   check(t.sample_warmup_cycles != d.sample_warmup_cycles, "timing.sample_warmup_cycles");
+  check(t.sample_head_periods != d.sample_head_periods, "timing.sample_head_periods");
+  check(t.sample_drain_share != d.sample_drain_share, "timing.sample_drain_share");
   check(t.functional_warming != d.functional_warming, "timing.functional_warming");
   check(t.fast_forward_batch_quanta != d.fast_forward_batch_quanta, "timing.fast_forward_batch_quanta");
   check(t.fast_forward_time_order != d.fast_forward_time_order, "timing.fast_forward_time_order");
@@ -174,6 +176,8 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_period_cycles", &timing.sample_period_cycles);
   b.bind("timing.sample_detail_cycles", &timing.sample_detail_cycles);
   b.bind("timing.sample_warmup_cycles", &timing.sample_warmup_cycles);
+  b.bind("timing.sample_head_periods", &timing.sample_head_periods);
+  b.bind("timing.sample_drain_share", &timing.sample_drain_share);
   b.bind("timing.functional_warming", &timing.functional_warming);
   b.bind("timing.fast_forward_batch_quanta", &timing.fast_forward_batch_quanta);
   b.bind("timing.fast_forward_time_order", &timing.fast_forward_time_order);
@@ -288,6 +292,11 @@ void ChipConfig::finalize() {
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
               real(timing.sample_target_error));
   sample_target_list(timing.sample_target_stats);  // its syntax; the names are checked against the tree
+  require(timing.sample_head_periods <= 1000,
+          "timing.sample_head_periods: 0 (no head) to 1000 periods, got " + std::to_string(timing.sample_head_periods));
+  require(timing.sample_drain_share >= 0.0 && timing.sample_drain_share <= 0.5,
+          "timing.sample_drain_share: 0 (no drain stratum) or a share of the frame's pixels up to 0.5, got " +
+              real(timing.sample_drain_share));
   if (timing.mode == transport::TimingMode::kSampled) {
     const auto& t = timing;
     // In 64 bits: a warm-up near 2^32 must not wrap the sum and pass.

@@ -91,9 +91,14 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
 
   values_ = stats::Values::snapshot(chip.statistics());
   const stats::Values raw = values_;
-  // Sampled timing with an error target: the windows of a sparser stretch count for more.
-  if (has_intervals()) values_ = chip.window_batches()->weighted_total(raw);
-  values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
+  // Sampled timing: the windows of a sparser stretch count for more, and the strata timed in
+  // full (the frame's head and drain) are estimated by their own ratios.
+  if (has_intervals()) {
+    const stats::BatchMeans& b = *chip.window_batches();
+    values_ = SampledEstimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles")).scaled(b.weighted_total(raw));
+  } else {
+    values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
+  }
   if (has_intervals()) {
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
@@ -114,7 +119,7 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   windows_ = b.windows();
   // A replicate's frame time is the simulated one scaled by the change in the samples' frame
   // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
-  const SampledEstimate estimate(b.weighted_total(raw), raw.number("frame.cycles"));
+  const SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
   std::vector<std::string> paths;
   raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
   const auto measure = [&](stats::Values r) {
@@ -130,6 +135,12 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   measured_share_ = cycles > 0 ? std::clamp(raw.number("sampling.measured_cycles") / cycles, 0.0, 1.0) : 0.0;
   std::vector<std::vector<double>> replicates;
   const std::vector<double> hw = b.half_widths(raw, measure, kConfidence, &replicates);
+  if (hw.empty() && batches_ == 0 && !b.strata(raw).empty()) {
+    timed_in_full_ = true;
+    interval_note_ = "no confidence intervals: the frame was timed in full as its head and drain strata "
+                     "(timing.sample_head_periods, timing.sample_drain_share), with no sampled middle";
+    return;
+  }
   if (hw.empty()) {
     interval_note_ = "no confidence intervals: the frame spanned " + std::to_string(batches_) +
                      " sampling window(s); at least 2 are needed (lower timing.sample_period_cycles)";
@@ -343,8 +354,12 @@ std::string FrameReport::summary() const {
                 ull(sm.count("period_cycles")), sm.count("period_changes") > 0 ? " at first" : "",
                 ull(sm.count("warmup_cycles")),
                 sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
+    if (sm.count("head_cycles") > 0 || sm.count("drain_cycles") > 0)
+      s += format("strata         head %llu cycles, drain %llu cycles: timed in full and estimated apart from the "
+                  "sampled middle [sampled]\n",
+                  ull(sm.count("head_cycles")), ull(sm.count("drain_cycles")));
     if (!interval_note_.empty())
-      s += format("warning        %s\n", interval_note_.c_str());
+      s += format("%s %s\n", timed_in_full_ ? "intervals     " : "warning       ", interval_note_.c_str());
     else
       s += format("intervals      %.0f%% confidence, from %zu windows in %zu batches (%s; %.1f%% of the frame "
                   "measured); figures without a \u00b1 are exact [sampled]\n",

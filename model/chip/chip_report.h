@@ -53,6 +53,7 @@ class FrameReport {
   stats::Group simulation_;
   stats::Values values_;
   std::map<std::string, double> half_widths_;
+  bool timed_in_full_ = false;  // sampled, but all of it in the head and drain strata
   std::string interval_note_;
   size_t batches_ = 0, windows_ = 0;
   double measured_share_ = 0;  // of the frame's cycles, by the windows' measured parts

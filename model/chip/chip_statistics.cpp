@@ -108,8 +108,21 @@ void Chip::register_stats() {
             "Detailed windows the frame held before its last (partial) one.");
     s.level("period_changes", [this] { return uint64_t{schedule_ ? schedule_->changes() : 0}; }, Unit::kCount,
             "Times the error target changed the sampling period.");
-    s.level("last_period_cycles", [this] { return schedule_ ? schedule_->period_at(report_cycle_) : uint64_t{0}; },
-            Unit::kCycles, "The period at the frame's end (the configured one unless an error target changed it).");
+    s.level("last_period_cycles", [this] { return schedule_ ? schedule_->sampled_period_at(report_cycle_) : uint64_t{0}; },
+            Unit::kCycles,
+            "The period at the frame's end, or before its drain (the configured one unless an error target changed it).");
+    s.level("head_cycles", [this] { return schedule_ ? std::min(schedule_->head_cycles(), report_cycle_) : uint64_t{0}; },
+            Unit::kCycles,
+            "The frame's first cycles, timed and measured in full as a stratum of their own (timing.sample_head_periods; "
+            "0: no head).");
+    s.level("drain_cycles",
+            [this] {
+              const uint64_t from = schedule_ ? schedule_->drain_from() : 0;
+              return from > 0 && report_cycle_ > from ? report_cycle_ - from : uint64_t{0};
+            },
+            Unit::kCycles,
+            "The frame's last cycles, from the window after the pixels left fell to timing.sample_drain_share, timed in "
+            "full as a stratum of their own (0: no drain stratum).");
     s.level("min_period_cycles", [this] { return sampler_ ? sampler_->min_period() : uint64_t{0}; },
             Unit::kCycles, "The shortest period an error target may choose (0: no sampler).");
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },

@@ -31,13 +31,23 @@ double sampled_model_cycles(const stats::Values& raw) {
   return measured > 0 ? raw.number("instructions.retired") * raw.number("sampling.measured_cycles") / measured : 0.0;
 }
 
-SampledEstimate::SampledEstimate(const stats::Values& weighted_raw, double simulated_cycles)
-    : simulated_cycles_(simulated_cycles), full_model_cycles_(sampled_model_cycles(weighted_raw)) {}
+SampledEstimate::SampledEstimate(const stats::Values& weighted_raw, const std::vector<stats::Values>& strata,
+                                 double simulated_cycles)
+    : simulated_cycles_(simulated_cycles) {
+  for (const stats::Values& s : strata) {
+    strata_model_cycles_ += sampled_model_cycles(s);
+    stats::Values scaled = s;
+    scaled.scale(extrapolation_factors(s));  // by the stratum's own ratios
+    strata_.push_back(std::move(scaled));
+  }
+  full_model_cycles_ = sampled_model_cycles(weighted_raw) + strata_model_cycles_;
+}
 
-stats::Values SampledEstimate::operator()(stats::Values raw) const {
-  if (full_model_cycles_ > 0) raw.set("frame.cycles", simulated_cycles_ * sampled_model_cycles(raw) / full_model_cycles_);
+stats::Values SampledEstimate::scaled(stats::Values raw) const {
+  if (full_model_cycles_ > 0)
+    raw.set("frame.cycles", simulated_cycles_ * (sampled_model_cycles(raw) + strata_model_cycles_) / full_model_cycles_);
   raw.scale(extrapolation_factors(raw));
-  raw.derive();
+  for (const stats::Values& s : strata_) raw.combine(s, +1, [](const std::string&, const stats::Values::Stat&) { return true; });
   return raw;
 }
 

@@ -22,9 +22,8 @@ class TmSampler {
   TmSampler(const TimingConfig& t, const SamplingSchedule* schedule, uint32_t global_register_latency)
       : enabled_(t.mode == transport::TimingMode::kSampled && schedule != nullptr),
         schedule_(schedule),
-        detail_(t.sample_detail_cycles),
-        warmup_(t.sample_warmup_cycles),
-        default_wait_(global_register_latency) {}
+        default_wait_(global_register_latency),
+        measure_warmup_(schedule ? schedule->warmup_at(0) : 0) {}  // the schedule's head is set before the TMs exist
 
   // What a stream or global-register operation did. With timing.fast_forward_op_classes a
   // fast-forwarded op is charged the mean latency the last measured window showed for its kind
@@ -46,11 +45,12 @@ class TmSampler {
   bool count_measured(Cycle window, Cycle t) {
     if (window > measure_window_) {
       measure_window_ = window;
+      measure_warmup_ = schedule_->warmup_at(window);  // the head's window has none
       measured_ = measured_waits_ = measured_wait_cycles_ = 0;
       class_waits_.fill(0);
       class_wait_cycles_.fill(0);
     }
-    measuring_ = window == measure_window_ && t - window >= warmup_;
+    measuring_ = window == measure_window_ && t - window >= measure_warmup_;
     if (measuring_) ++measured_;
     return measuring_;
   }
@@ -79,7 +79,10 @@ class TmSampler {
     // Fewer instructions than TPs is too little to measure (all stalled, or halting, or the
     // window was missed): keep the rates of the last window that had enough (at first, 1).
     if (window != measure_window_ || measured_ < tps) return;
-    const double tp_cycles = double(detail_ - warmup_) * double(tps);
+    // The measured part's length: the head's whole window, the configured windows past their
+    // warm-up (the drain, timed in full, has no fast-forward to set rates for).
+    const double tp_cycles =
+        double(schedule_->detail_at(window) - schedule_->warmup_at(window)) * double(tps);
     const double issued = double(measured_);
     const double waits = double(measured_waits_);
     const double wait_cycles = std::min(tp_cycles, double(measured_wait_cycles_));
@@ -126,9 +129,9 @@ class TmSampler {
   }
   bool enabled_;
   const SamplingSchedule* schedule_;
-  Cycle detail_, warmup_;
   uint32_t default_wait_;
   Cycle measure_window_ = 0;  // the detailed window being measured (its first cycle)
+  Cycle measure_warmup_;      // its warm-up (set with it)
   uint64_t measured_ = 0;               // instructions issued in its measured part
   uint64_t measured_waits_ = 0;         // of which stream and global-register operations
   uint64_t measured_wait_cycles_ = 0;   // their cycles from request to answer

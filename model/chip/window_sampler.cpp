@@ -57,7 +57,9 @@ bool WindowSampler::measured(const std::string& path, const stats::Values::Stat&
   return s.basis != stats::Basis::kExact || path.compare(0, 9, "sampling.") == 0;
 }
 
-uint64_t WindowSampler::min_period() const {
+uint64_t WindowSampler::min_period() const { return min_period(config_.timing); }
+
+uint64_t WindowSampler::min_period(const TimingConfig& t) {
   // When the sampler wakes, halfway through the fast-forward, no TM may have begun the next
   // window's measured part: half the fast-forward plus the next warm-up must exceed a TM's lead
   // on global time. A TM enters a window only when its earliest TP does, and that TP is within
@@ -65,10 +67,16 @@ uint64_t WindowSampler::min_period() const {
   // window), so the lead is a quantum and a TP slack; the margin of 5 quanta was sized when a
   // batch was thought to add 4 and is kept. Two quanta at least, so that a fast-forward
   // happens at all.
-  const auto& t = config_.timing;
   const uint64_t ahead = 5ull * t.quantum_cycles + 2ull * t.tp_slack_cycles;
   const uint64_t gap = ahead > t.sample_warmup_cycles ? 2 * (ahead - t.sample_warmup_cycles) : 0;
   return t.sample_detail_cycles + std::max<uint64_t>(gap, 2ull * t.quantum_cycles);
+}
+
+void WindowSampler::plan_head(const TimingConfig& t, SamplingSchedule& schedule) {
+  if (t.sample_head_periods == 0) return;
+  // After the head, the shortest fast-forward a window may have: the sampler wakes halfway
+  // through it, before any TM reaches the next window's measured part (min_period).
+  schedule.set_head(uint64_t{t.sample_head_periods} * t.sample_period_cycles, min_period(t) - t.sample_detail_cycles);
 }
 
 // Never sparser than configured, nor than a 32nd of the frame: a target met early must not leave
@@ -81,40 +89,77 @@ uint64_t WindowSampler::max_period(double frame_cycles) const {
 void WindowSampler::run() {
   const uint32_t id = config_.tms;  // after the TMs' turns at the same cycle
   for (uint64_t window = 0;; window = schedule_.next_window(window)) {
+    if (schedule_.timed_in_full(window)) return finish_drain(id, window);
     // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
     // there, far less than the distance to either measured part.
     const uint64_t period = schedule_.period_at(window);
-    const uint64_t at = window + schedule_.detail() + (period - schedule_.detail()) / 2;
+    const uint64_t detail = schedule_.detail_at(window);
+    const uint64_t at = window + detail + (period - detail) / 2;
     // The TMs resuming at `at` run first: the snapshot does not depend on how the kernel
     // orders processes woken at the same time (turn_order.h).
     turns_.wait_turn(id, at);
+    const bool head = window == 0 && schedule_.has_head();
     if (progress_.done()) {  // the frame ended in this period: the report takes its tail
-      // A frame that ended before the first window's snapshot has its tail as its only sample.
-      // Its weight then scales every measured count and the denominators alike, which the
-      // extrapolation (sampling_factors.cpp) divides out again, so it is 1. Weighted counts are
-      // rounded to whole numbers, and the tail's share of a period far longer than the frame
-      // (timing.sample_period_cycles=4294967295: 1e-5) rounded the frame's counts to a few or
-      // none (0% L1 hit rate, 0 L2 accesses; issue 39, F1).
-      batches_.set_tail_weight(batches_.windows() == 0
-                                   ? 1.0
-                                   : tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      if (head) {
+        // It ended in its head, timed in full: the whole frame is that stratum.
+        batches_.set_tail_stratum(true);
+      } else {
+        // A frame that ended before the first window's snapshot has its tail as its only
+        // sample. Its weight then scales every measured count and the denominators alike,
+        // which the extrapolation (sampling_factors.cpp) divides out again, so it is 1.
+        // Weighted counts are rounded to whole numbers, and the tail's share of a period far
+        // longer than the frame (timing.sample_period_cycles=4294967295: 1e-5) rounded the
+        // frame's counts to a few or none (0% L1 hit rate, 0 L2 accesses; issue 39, F1).
+        batches_.set_tail_weight(batches_.windows() == 0
+                                     ? 1.0
+                                     : tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+      }
       turns_.leave();
       return;
     }
     stats::Values cumulative = stats::Values::snapshot(root_);
-    // A window stands for its period of the frame: weighted against the first period.
-    const double weight = double(period) / double(config_.timing.sample_period_cycles);
-    batches_.add_window(cumulative, weight);
-    weight_sum_ += weight;
-    if (!(config_.timing.sample_target_error > 0)) continue;
     const double instructions = cumulative.number("sampling.measured_instructions");
-    const std::vector<double> counts = target_counts(cumulative);
-    for (size_t k = 0; k < targets_.size(); ++k)
-      windows_[k].push_back({weight, counts[k] - last_counts_[k], instructions - last_instructions_});
-    last_counts_ = counts;
-    last_instructions_ = instructions;
-    retarget(at, cumulative);
+    if (head) {
+      // The head is a stratum of its own: counted whole, in no batch, not a window the error
+      // target's plan draws its spread from. It stands for its period in the plan's coverage.
+      batches_.add_head_stratum(cumulative);
+      head_weight_ = double(period) / double(config_.timing.sample_period_cycles);
+      last_counts_ = target_counts(cumulative);
+    } else {
+      // A window stands for its period of the frame: weighted against the first period.
+      const double weight = double(period) / double(config_.timing.sample_period_cycles);
+      batches_.add_window(cumulative, weight);
+      weight_sum_ += weight;
+      if (config_.timing.sample_target_error > 0) {
+        const std::vector<double> counts = target_counts(cumulative);
+        for (size_t k = 0; k < targets_.size(); ++k)
+          windows_[k].push_back({weight, counts[k] - last_counts_[k], instructions - last_measured_});
+        last_counts_ = counts;
+        retarget(at, cumulative);
+      }
+    }
+    last_measured_ = instructions;
+    // The drain: once the pixels left to finish fall to the configured share, the rest of the
+    // frame is one window timed in full (after any period the plan just set, which it replaces).
+    const double share = config_.timing.sample_drain_share;
+    if (share > 0 && 1.0 - progress_.fraction() <= share) schedule_.time_in_full(schedule_.next_window(window));
   }
+}
+
+void WindowSampler::finish_drain(uint32_t id, uint64_t from) {
+  // Every TM is timed from `from` to the frame's end: wake once a configured period to see
+  // whether it has ended (no snapshot is taken on the way).
+  for (uint64_t at = from;;) {
+    at += config_.timing.sample_period_cycles;
+    turns_.wait_turn(id, at);
+    if (progress_.done()) break;
+  }
+  // The drain is a stratum if its window measured anything; a frame that ended in its warm-up
+  // leaves a tail like any other.
+  const double measured = stats::Values::snapshot(root_).number("sampling.measured_instructions");
+  if (measured > last_measured_) batches_.set_tail_stratum(true);
+  else batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+  turns_.leave();
 }
 
 std::vector<double> WindowSampler::target_counts(const stats::Values& cumulative) const {
@@ -133,7 +178,7 @@ std::vector<double> WindowSampler::relative_half_widths(uint64_t now, const stat
   // The windows so far against the instructions retired so far: the estimate of the frame up to
   // `now`, and its interval, exactly as the report would give them if the frame ended here.
   const stats::Values centre_raw = batches_.weighted_total(cumulative);
-  const SampledEstimate estimate(centre_raw, double(now));
+  const SampledEstimate estimate(centre_raw, batches_.strata(cumulative), double(now));
   const auto read = [this](const stats::Values& e) {
     std::vector<double> out;
     out.reserve(targets_.size());
@@ -237,7 +282,7 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
   double chosen = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < targets_.size(); ++k) {
     if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
-    const double gain = target * (frame / base) / (relative[k] * weight_sum_);
+    const double gain = target * (frame / base) / (relative[k] * (head_weight_ + weight_sum_));
     const double weight =
         remaining > 0 ? spread_weight(windows_[k], kRecentWindows, config_.timing.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
     chosen = std::min(chosen, std::max(0.0, weight) * base);

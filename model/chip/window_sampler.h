@@ -53,6 +53,10 @@ class WindowSampler : public sc_core::sc_module {
   // The shortest period the schedule may take: the detailed window, and on each side of the
   // sampler's wake-up a margin no TM runs ahead of global time by.
   uint64_t min_period() const;
+  static uint64_t min_period(const TimingConfig& t);
+  // The frame's head (timing.sample_head_periods) as a window of its own, timed in full: set on
+  // the schedule before the TMs are built (they read the first window's warm-up).
+  static void plan_head(const TimingConfig& t, SamplingSchedule& schedule);
   // The longest: the configured period, or, once the target is met with room, a kMinWindows-th
   // of the whole frame (`frame_cycles`, projected), so no stretch longer than that (the frame's
   // drain, a change of phase) goes unsampled. Of the whole frame, not of its rest: a cap on the
@@ -88,6 +92,8 @@ class WindowSampler : public sc_core::sc_module {
 
  private:
   void run();
+  // The drain, from the window `from` on, timed in full: wait for the frame's end.
+  void finish_drain(uint32_t id, uint64_t from);
   void retarget(uint64_t now, const stats::Values& cumulative);
   // Each target's relative half-width from the windows so far, by the report's estimator
   // (SampledEstimate and the batches' interval); 0 where no interval can be given yet.
@@ -105,8 +111,9 @@ class WindowSampler : public sc_core::sc_module {
   std::vector<std::string> targets_;
   std::vector<std::vector<Window>> windows_;  // per target statistic, for the error target
   std::vector<double> last_counts_;
-  double last_instructions_ = 0;
-  double weight_sum_ = 0;  // of the windows so far
+  double last_measured_ = 0;  // measured instructions at the last snapshot
+  double weight_sum_ = 0;     // of the windows so far
+  double head_weight_ = 0;    // the head's span, in configured periods (0: no head)
 };
 
 }  // namespace strata::chip

@@ -49,9 +49,31 @@ void BatchMeans::add_window(const Values& cumulative, double weight) {
   per_batch_ *= 2;
 }
 
+namespace {
+bool any_count(const std::string&, const Values::Stat&) { return true; }
+}  // namespace
+
+void BatchMeans::add_head_stratum(const Values& cumulative) {
+  if (windows_ > 0 || !head_.empty()) throw std::logic_error("BatchMeans: the head stratum comes before every window");
+  head_.push_back(cumulative);  // since the frame began: the cumulative tree is the difference
+  last_ = cumulative;
+  have_last_ = true;
+}
+
+std::vector<Values> BatchMeans::strata(const Values& total) const {
+  std::vector<Values> out = head_;
+  if (tail_stratum_) {
+    Values tail = total;
+    if (have_last_) tail.combine(last_, -1, any_count);
+    out.push_back(std::move(tail));
+  }
+  return out;
+}
+
 std::vector<Values> BatchMeans::all_batches(const Values& total) const {
   std::vector<Values> batches = full_;
   if (in_current_ > 0) batches.push_back(current_);
+  if (tail_stratum_) return batches;  // the tail is the drain stratum
   // What came after the last window's end: the frame's tail (its last, partial window).
   Values tail = total;
   if (have_last_) tail.combine(last_, -1, measured_);
@@ -73,6 +95,7 @@ Values BatchMeans::weighted_total(const Values& total) const {
   Values est = total;
   const Values copy = total;
   est.combine(copy, -1, measured_);  // every measured count to 0, the exact totals kept
+  for (const Values& s : strata(total)) est.combine(s, -1, any_count);  // the middle's exact totals
   for (const Values& b : all_batches(total)) est.combine(b, +1, measured_);
   return est;
 }

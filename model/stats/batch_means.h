@@ -56,9 +56,19 @@ class BatchMeans {
   void add_window(const Values& cumulative, double weight = 1.0);
   // The weight of what follows the last window (the frame's tail), by default 1.
   void set_tail_weight(double weight) { tail_weight_ = weight; }
+  // What the frame did since the last window (or its start) is a stratum: every count,
+  // measured or exact, in none of the batches. Before the first window only (the head).
+  void add_head_stratum(const Values& cumulative);
+  // What follows the last window is a stratum (the drain), not a partial batch.
+  void set_tail_stratum(bool on) { tail_stratum_ = on; }
+  bool tail_stratum() const { return tail_stratum_; }
+  // The strata's raw counts (every count the difference over its stretch; levels are not
+  // meaningful there), the head first: each is estimated by its own ratio.
+  std::vector<Values> strata(const Values& total) const;
 
-  // The frame's raw totals with every measured count replaced by the weighted sum over the
-  // windows (equal to `total` when every weight is 1): what the report scales and derives.
+  // The middle stratum's raw totals: the frame's exact counts less the strata's, and every
+  // measured count the weighted sum over the batches (with one period and no strata, `total`).
+  // What the report scales (by the middle's own factors) and derives.
   Values weighted_total(const Values& total) const;
   size_t windows() const { return windows_; }
 
@@ -89,6 +99,8 @@ class BatchMeans {
   Values last_;                // the cumulative tree at the last window's end
   bool have_last_ = false;
   double tail_weight_ = 1.0;
+  bool tail_stratum_ = false;
+  std::vector<Values> head_;  // the head stratum, if any
 };
 
 }  // namespace strata::stats

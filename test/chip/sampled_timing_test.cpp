@@ -331,12 +331,14 @@ TEST(SampledTimingOrder, TheFastForwardChangesTheRayBuffersInTimeOrder) {
 // was weighted by its share of the period and weighted counts are whole numbers: at
 // 4294967295 (the largest accepted) the trax frame reported 0 L2 accesses and a 100% L1 hit
 // rate, and at 1e7 95,240 L2 accesses where the unrounded tail gives 96,134.
+// (Without the head stratum, which would time such a frame in full: the next test.)
 TEST_P(SampledTiming, APeriodLongerThanTheFrameKeepsTheMemoryFigures) {
   TempDir dir;
+  const std::string no_head = " --set timing.sample_head_periods=0";
   const nlohmann::json ten_million =
-      run_frame(dir, GetParam(), "sampled", "-1e7", " --set timing.sample_period_cycles=10000000");
+      run_frame(dir, GetParam(), "sampled", "-1e7", " --set timing.sample_period_cycles=10000000" + no_head);
   const nlohmann::json largest =
-      run_frame(dir, GetParam(), "sampled", "-max", " --set timing.sample_period_cycles=4294967295");
+      run_frame(dir, GetParam(), "sampled", "-max", " --set timing.sample_period_cycles=4294967295" + no_head);
   ASSERT_FALSE(ten_million.is_null() || largest.is_null());
   ASSERT_LT(ten_million["frame"]["cycles"].get<double>(), 5e6) << "the frame must end before the first snapshot";
   EXPECT_EQ(ten_million["sampling"]["windows"], 0);
@@ -352,12 +354,32 @@ TEST_P(SampledTiming, APeriodLongerThanTheFrameKeepsTheMemoryFigures) {
   EXPECT_GT(largest["memory"]["dram"]["bytes"].get<double>(), 0.0);
 }
 
+// The frame's head is a window timed in full from cycle 0, with no warm-up (there is nothing to
+// warm: LT's caches are cold there too). A frame that ends in its head is therefore timed
+// exactly as LT times it: every figure equals LT's, and the summary says there was nothing to
+// estimate.
+TEST_P(SampledTiming, AFrameThatEndsInItsHeadIsTimedAsLtTimesIt) {
+  TempDir dir;
+  const nlohmann::json lt = run_frame(dir, GetParam(), "lt");
+  const nlohmann::json full =
+      run_frame(dir, GetParam(), "sampled", "-head", " --set timing.sample_period_cycles=10000000");
+  const std::string summary = read_text(dir.path() / "log.txt");
+  ASSERT_FALSE(lt.is_null() || full.is_null());
+  for (const char* part : {"frame", "rays", "memory", "xu", "energy_nj"}) EXPECT_EQ(full[part], lt[part]) << part;
+  EXPECT_EQ(full["sampling"]["head_cycles"], lt["frame"]["cycles"]);
+  EXPECT_EQ(full["sampling"]["timed_instructions"], full["instructions"]["retired"]);
+  EXPECT_NE(summary.find("no confidence intervals: the frame was timed in full as its head and drain strata"),
+            std::string::npos)
+      << summary;
+}
+
 // A frame shorter than the sampler's pilot never got a plan: the warning says so, rather than
 // that a plan expected the target met (issue 39, minor).
 TEST_P(SampledTiming, ATargetOnAFrameTooShortToPlanSaysNoPlanWasPossible) {
   TempDir dir;
   const nlohmann::json j = run_frame(dir, GetParam(), "sampled", "-short",
-                                     " --set timing.sample_period_cycles=10000000 --set timing.sample_target_error=0.05");
+                                     " --set timing.sample_period_cycles=10000000 --set timing.sample_target_error=0.05"
+                                     " --set timing.sample_head_periods=0");
   ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["sampling"]["windows"], 0);
   const std::string summary = read_text(dir.path() / "log.txt");

@@ -95,3 +95,52 @@ TEST(WindowSampler, TheTailWindowStandsForWhatIsLeftOfTheFrame) {
 }
 
 }  // namespace
+
+namespace {
+
+// The frame's head and drain as windows timed in full (sampling_schedule.h): the head is
+// detailed and measured from cycle 0 with no warm-up, the drain from its window on until the
+// frame ends; the measured cycles count both.
+TEST(SamplingScheduleStrata, TheHeadAndTheDrainAreWindowsTimedInFull) {
+  strata::chip::TimingConfig t;  // period 100,000, detail 20,000, warm-up 8,000
+  strata::chip::SamplingSchedule s(t);
+  WindowSampler::plan_head(t, s);  // 4 periods by default
+  const uint64_t head = 4 * 100000, gap = WindowSampler::min_period(t) - t.sample_detail_cycles;
+  ASSERT_TRUE(s.has_head());
+  EXPECT_EQ(s.head_cycles(), head);
+  EXPECT_EQ(s.window_of(0), 0u);
+  EXPECT_EQ(s.warmup_at(0), 0u);
+  EXPECT_TRUE(s.detailed(0));
+  EXPECT_TRUE(s.detailed(head - 1));
+  EXPECT_FALSE(s.detailed(head));
+  EXPECT_EQ(s.next_window(0), head + gap);  // then the configured windows
+  EXPECT_EQ(s.warmup_at(head + gap), 8000u);
+  EXPECT_EQ(s.window_end(head + gap), head + gap + 19999);
+  EXPECT_EQ(s.measured_cycles_before(head), head);
+  EXPECT_EQ(s.measured_cycles_before(head + gap + 100000), head + 12000);
+  EXPECT_EQ(s.changes(), 0u);
+
+  const uint64_t drain = head + gap + 300000;
+  s.change_period(head + gap + 200000, 50000);  // an error target's plan
+  s.time_in_full(drain);
+  EXPECT_EQ(s.changes(), 1u);
+  EXPECT_TRUE(s.timed_in_full(drain + 123456789));
+  EXPECT_TRUE(s.detailed(drain + 123456789));
+  EXPECT_FALSE(s.timed_in_full(drain - 1));
+  EXPECT_EQ(s.drain_from(), drain);
+  EXPECT_EQ(s.sampled_period_at(drain + 5), 50000u);
+  EXPECT_EQ(s.period_at(drain - 1), 50000u);
+  const uint64_t before = s.measured_cycles_before(drain);
+  EXPECT_EQ(s.measured_cycles_before(drain + 8000), before);  // its warm-up
+  EXPECT_EQ(s.measured_cycles_before(drain + 1008000), before + 1000000);
+
+  strata::chip::TimingConfig none;
+  none.sample_head_periods = 0;
+  strata::chip::SamplingSchedule plain(none);
+  WindowSampler::plan_head(none, plain);
+  EXPECT_FALSE(plain.has_head());
+  EXPECT_EQ(plain.warmup_at(0), 8000u);
+  EXPECT_EQ(plain.head_cycles(), 0u);
+}
+
+}  // namespace

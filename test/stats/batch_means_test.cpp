@@ -117,6 +117,57 @@ TEST(BatchMeans, ATailAfterTheLastWindowIsOneMoreBatch) {
   EXPECT_EQ(w.count("sampling.measured_instructions"), 340u);
 }
 
+// The frame's head and drain as strata (docs/sampled-timing.md, "Head and drain strata"): in no
+// batch, never deleted from a replicate, and the middle's exact totals are the frame's less
+// theirs, so each part can be scaled by its own ratio.
+TEST(BatchMeans, TheHeadAndTheDrainAreStrataOutsideTheBatches) {
+  Tree t;
+  BatchMeans b(&measured);
+  t.retired = 1000;  // the head: everything measured
+  t.measured = 1000;
+  t.misses = 50;
+  b.add_head_stratum(Values::snapshot(t.root));
+  EXPECT_THROW(b.add_head_stratum(Values::snapshot(t.root)), std::logic_error);
+  for (int i = 0; i < 4; ++i) {  // the middle: a tenth measured
+    t.retired += 1000;
+    t.measured += 100;
+    t.misses += 20 + i;
+    b.add_window(Values::snapshot(t.root));
+  }
+  t.retired += 500;  // the drain, after the last window
+  t.measured += 450;
+  t.misses += 90;
+  const Values total = Values::snapshot(t.root);
+  EXPECT_EQ(b.batches(total), 5u) << "without the drain stratum the tail is a batch";
+  b.set_tail_stratum(true);
+  EXPECT_EQ(b.batches(total), 4u);
+  const std::vector<Values> strata = b.strata(total);
+  ASSERT_EQ(strata.size(), 2u);
+  EXPECT_EQ(strata[0].count("retired"), 1000u);
+  EXPECT_EQ(strata[0].count("memory.misses"), 50u);
+  EXPECT_EQ(strata[1].count("retired"), 500u);
+  EXPECT_EQ(strata[1].count("sampling.measured_instructions"), 450u);
+  EXPECT_EQ(strata[1].count("memory.misses"), 90u);
+  // The middle: 4,000 instructions retired, 400 measured, 86 misses.
+  const Values middle = b.weighted_total(total);
+  EXPECT_EQ(middle.count("retired"), 4000u);
+  EXPECT_EQ(middle.count("sampling.measured_instructions"), 400u);
+  EXPECT_EQ(middle.count("memory.misses"), 86u);
+  // Replicates delete middle batches only: the strata's counts are in none of them.
+  std::vector<std::vector<double>> replicates;
+  const auto hw = b.half_widths(total,
+                                [](Values r) {
+                                  finish(r);
+                                  return std::vector<double>{r.number("memory.misses")};
+                                },
+                                0.95, &replicates);
+  ASSERT_EQ(hw.size(), 1u);
+  ASSERT_EQ(replicates[0].size(), 4u);
+  const double x[] = {20, 21, 22, 23};
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(replicates[0][i], (86 - x[i]) * 4000.0 / 300.0, 0.5) << i;  // integer counts round
+}
+
 TEST(BatchMeans, FullBatchesMergeSoMemoryStaysBounded) {
   Tree t;
   BatchMeans b(&measured, 4);
