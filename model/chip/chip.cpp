@@ -92,7 +92,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   if (config_.timing.mode == transport::TimingMode::kSampled)
     sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, *turns_, WindowSampler::Progress{
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
-        [this] { return uint64_t{cycles()}; }});
+        [this] { return uint64_t{cycles()}; },
+        [this] { return globals_.values[kernels::kPixelCounterRegister] >= pixels_; }});
 }
 
 Chip::~Chip() = default;

@@ -85,11 +85,11 @@ struct TimingConfig {
   // timed in full and estimated apart from the sampled middle (window_sampler.h,
   // docs/sampled-timing.md "Head and drain strata"). The head: the first sample_head_periods
   // configured periods (0: none), cold caches and the first camera rays, whose windows moved
-  // STRaTA's DRAM estimate by 9.5% at 512x512. The drain: from the first window after the
-  // pixels left to finish fall to sample_drain_share of the frame's (0: none), where the rays
-  // in flight run out.
+  // STRaTA's DRAM estimate by 9.5% at 512x512. The drain: from the first window after every
+  // pixel has been handed out and the pixels left to finish have fallen to sample_drain_share
+  // of the frame's (0: none), where the rays in flight run out.
   uint32_t sample_head_periods = 4;
-  double sample_drain_share = 0.05;
+  double sample_drain_share = 0.25;
   // Sampled: during fast-forward, replay every load and store as a tag update of the L1 data
   // cache and the L2 (no time, no counts), so a detailed window starts from warm caches.
   bool functional_warming = true;

@@ -4,7 +4,7 @@
 // tree is handed to a BatchMeans, whose batches of windows give every estimate its interval.
 //
 // With an error target (timing.sample_target_error), the sampler also chooses the period: after
-// a pilot of kPilotWindows windows at the configured period, at every window it estimates the
+// a pilot of kPilotWindows windows at the shortest period, at every window it estimates the
 // intervals of the statistics the target names (timing.sample_target_stats: frame cycles, DRAM
 // bytes and L2 accesses by default) from the windows so far, by the report's own interval, and
 // how long the frame will be (from the share of pixels done). It sets the period of the windows
@@ -34,6 +34,7 @@ class WindowSampler : public sc_core::sc_module {
     std::function<bool()> done;        // the frame has finished
     std::function<double()> fraction;  // share of the frame's pixels finished, 0..1
     std::function<uint64_t()> end;     // the frame's last cycle, once done() holds
+    std::function<bool()> handed_out;  // every pixel has been handed out to a path
   };
   SC_HAS_PROCESS(WindowSampler);
   WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
