@@ -141,6 +141,13 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
                      "(timing.sample_head_periods, timing.sample_drain_share), with no sampled middle";
     return;
   }
+  if (hw.empty() && !b.strata(raw).empty()) {
+    interval_note_ = "no confidence intervals: the sampled middle between the frame's head and drain held " +
+                     std::to_string(windows_) + " window(s), at least 2 are needed (" +
+                     format("%.1f%%", 100 * measured_share_) +
+                     " of the frame measured; lower timing.sample_period_cycles or timing.sample_head_periods)";
+    return;
+  }
   if (hw.empty()) {
     interval_note_ = "no confidence intervals: the frame spanned " + std::to_string(batches_) +
                      " sampling window(s); at least 2 are needed (lower timing.sample_period_cycles)";
