@@ -120,6 +120,7 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   // A replicate's frame time is the simulated one scaled by the change in the samples' frame
   // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
   const SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
+  model_cycles_ = estimate.model_cycles();
   std::vector<std::string> paths;
   raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
   const auto measure = [&](stats::Values r) {
@@ -196,7 +197,8 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
                                         ", Student t (docs/sampled-timing.md)"},
                          {"windows", windows_},
                          {"batches", batches_},
-                         {"measured_share", measured_share_}};
+                         {"measured_share", measured_share_},
+                         {"model_frame_cycles", model_cycles_}};
     if (!replicates_.empty()) {
       // Each figure re-estimated without one batch, in batch order (the frame's start first).
       nlohmann::json r = nlohmann::json::object();

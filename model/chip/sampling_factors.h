@@ -31,6 +31,9 @@ class SampledEstimate {
   // The estimate from the middle's raw totals `raw` (the centre, or a replicate), before the
   // ratios and formulas are derived.
   stats::Values scaled(stats::Values raw) const;
+  // The frame time the samples imply, strata and middle each by their own ratio (the
+  // estimate the frame-cycle interval is of; the report prints the simulated frame time).
+  double model_cycles() const { return full_model_cycles_; }
   stats::Values operator()(stats::Values raw) const {
     stats::Values v = scaled(std::move(raw));
     v.derive();
