@@ -93,13 +93,12 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
   const stats::Values raw = values_;
   // Sampled timing: the windows of a sparser stretch count for more, and the strata timed in
   // full (the frame's head and drain) are estimated by their own ratios.
-  if (has_intervals()) {
-    const stats::BatchMeans& b = *chip.window_batches();
-    values_ = SampledEstimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles")).scaled(b.weighted_total(raw));
-  } else {
+  if (!has_intervals()) {
     values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
-  }
-  if (has_intervals()) {
+  } else {
+    const stats::BatchMeans& b = *chip.window_batches();
+    const stats::Values middle = b.weighted_total(raw);
+    values_ = SampledEstimate(middle, b.strata(raw), raw.number("frame.cycles")).scaled(middle);
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
       return path.compare(0, 9, "sampling.") == 0;
@@ -119,6 +118,7 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   windows_ = b.windows();
   // A replicate's frame time is the simulated one scaled by the change in the samples' frame
   // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
+  const bool stratified = !b.strata(raw).empty();
   const SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
   model_cycles_ = estimate.model_cycles();
   std::vector<std::string> paths;
@@ -136,13 +136,13 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   measured_share_ = cycles > 0 ? std::clamp(raw.number("sampling.measured_cycles") / cycles, 0.0, 1.0) : 0.0;
   std::vector<std::vector<double>> replicates;
   const std::vector<double> hw = b.half_widths(raw, measure, kConfidence, &replicates);
-  if (hw.empty() && batches_ == 0 && !b.strata(raw).empty()) {
+  if (hw.empty() && batches_ == 0 && stratified) {
     timed_in_full_ = true;
     interval_note_ = "no confidence intervals: the frame was timed in full as its head and drain strata "
                      "(timing.sample_head_periods, timing.sample_drain_share), with no sampled middle";
     return;
   }
-  if (hw.empty() && !b.strata(raw).empty()) {
+  if (hw.empty() && stratified) {
     interval_note_ = "no confidence intervals: the sampled middle between the frame's head and drain held " +
                      std::to_string(windows_) + " window(s), at least 2 are needed (" +
                      format("%.1f%%", 100 * measured_share_) +

@@ -49,9 +49,6 @@ class SamplingSchedule {
   Cycle detail_at(Cycle window) const { return segment_of(window).detail; }
   Cycle warmup_at(Cycle window) const { return segment_of(window).warmup; }
   Cycle period_at(Cycle t) const { return segment_of(t).period; }
-  // The configured window's lengths.
-  Cycle detail() const { return detail_; }
-  Cycle warmup() const { return warmup_; }
 
   // From the window starting at `from` (a window start under the current periods, that no TM
   // has reached) on, windows open every `period` cycles.

@@ -61,7 +61,6 @@ class BatchMeans {
   void add_head_stratum(const Values& cumulative);
   // What follows the last window is a stratum (the drain), not a partial batch.
   void set_tail_stratum(bool on) { tail_stratum_ = on; }
-  bool tail_stratum() const { return tail_stratum_; }
   // The strata's raw counts (every count the difference over its stretch; levels are not
   // meaningful there), the head first: each is estimated by its own ratio.
   std::vector<Values> strata(const Values& total) const;
