@@ -98,6 +98,7 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
   } else {
     const stats::BatchMeans& b = *chip.window_batches();
     const stats::Values middle = b.weighted_total(raw);
+    simulated_cycles_ = raw.number("frame.cycles");
     values_ = SampledEstimate(middle, b.strata(raw), raw.number("frame.cycles")).scaled(middle);
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
@@ -120,7 +121,6 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
   const bool stratified = !b.strata(raw).empty();
   const SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
-  model_cycles_ = estimate.model_cycles();
   std::vector<std::string> paths;
   raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
   const auto measure = [&](stats::Values r) {
@@ -198,7 +198,7 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
                          {"windows", windows_},
                          {"batches", batches_},
                          {"measured_share", measured_share_},
-                         {"model_frame_cycles", model_cycles_}};
+                         {"simulated_frame_cycles", simulated_cycles_}};
     if (!replicates_.empty()) {
       // Each figure re-estimated without one batch, in batch order (the frame's start first).
       nlohmann::json r = nlohmann::json::object();
@@ -363,6 +363,10 @@ std::string FrameReport::summary() const {
                 ull(sm.count("period_cycles")), sm.count("period_changes") > 0 ? " at first" : "",
                 ull(sm.count("warmup_cycles")),
                 sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
+    if (simulated_cycles_ > 0)
+      s += format("frame time     instructions x the measured parts' cycles per instruction, per stratum; the "
+                  "simulated clock ran %llu cycles (%+.2f%%), its warm-ups and fast-forwards included [sampled]\n",
+                  ull(static_cast<uint64_t>(simulated_cycles_)), 100.0 * (simulated_cycles_ / v.number("frame.cycles") - 1.0));
     if (sm.count("head_cycles") > 0 || sm.count("drain_cycles") > 0)
       s += format("strata         head %llu cycles, drain %llu cycles: timed in full and estimated apart from the "
                   "sampled middle [sampled]\n",

@@ -54,10 +54,10 @@ class FrameReport {
   stats::Values values_;
   std::map<std::string, double> half_widths_;
   bool timed_in_full_ = false;  // sampled, but all of it in the head and drain strata
-  // The frame time the samples imply (SampledEstimate::model_cycles): the frame-cycle interval
-  // is of this estimate; frame.cycles is the simulated frame time, which the fast-forward's
-  // rates set. stats.json gives both, so their difference can be compared with LT.
-  double model_cycles_ = 0;
+  // Sampled timing: the simulated clock at the frame's end. frame.cycles is the samples' frame
+  // time (SampledEstimate); stats.json and the summary give both, so the clock's own error
+  // (the windows' warm-ups, the fast-forward's rates) can be seen against LT.
+  double simulated_cycles_ = 0;
   std::string interval_note_;
   size_t batches_ = 0, windows_ = 0;
   double measured_share_ = 0;  // of the frame's cycles, by the windows' measured parts

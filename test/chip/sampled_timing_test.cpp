@@ -396,13 +396,22 @@ TEST_P(SampledTiming, TheDrainIsAStratumTimedInFull) {
   EXPECT_NE(summary.find("strata         head 24000 cycles, drain " + std::to_string(uint64_t(drained)) + " cycles"),
             std::string::npos)
       << summary;
+  // The frame time is the samples' estimate; the summary gives the simulated clock beside it.
+  EXPECT_NE(summary.find("frame time     instructions x the measured parts' cycles per instruction, per stratum; "
+                         "the simulated clock ran " +
+                         std::to_string(drain["intervals"]["simulated_frame_cycles"].get<uint64_t>()) + " cycles"),
+            std::string::npos)
+      << summary;
   // Only the middle's batches have replicates.
   EXPECT_EQ(drain["intervals"]["replicates"]["frame.cycles"].size(), drain["intervals"]["batches"].get<size_t>());
+  // Near LT by the interval's measure. Twice the 95% half-width: 340 windows make it +-0.09%
+  // on cycles here, and the estimate's own error (the measured parts' cycles per instruction
+  // against LT's) is of that size (+0.09%; the simulated clock +0.08%).
   for (const char* path : {"/frame/cycles", "/energy_nj/total"}) {
     const auto ptr = nlohmann::json::json_pointer(path);
     const double half_width =
         drain["intervals"]["stats"][nlohmann::json::json_pointer(std::string(path) + "/half_width")].get<double>();
-    EXPECT_LE(std::abs(drain[ptr].get<double>() - lt[ptr].get<double>()), half_width) << path;
+    EXPECT_LE(std::abs(drain[ptr].get<double>() - lt[ptr].get<double>()), 2 * half_width) << path;
   }
 }
 
@@ -457,7 +466,10 @@ TEST(SampledTimingIntervals, TheMethodChangesTheIntervalsNotTheEstimates) {
   const double share = succ["intervals"]["measured_share"].get<double>();
   EXPECT_GT(share, 0.0);
   EXPECT_LT(share, 1.0);
-  EXPECT_NEAR(share, succ["sampling"]["measured_cycles"].get<double>() / succ["frame"]["cycles"].get<double>(), 1e-9);
+  // Of the simulated clock's cycles (the frame time reported is the samples' estimate).
+  const double clock = succ["intervals"]["simulated_frame_cycles"].get<double>();
+  EXPECT_NEAR(share, succ["sampling"]["measured_cycles"].get<double>() / clock, 1e-9);
+  EXPECT_NEAR(clock / succ["frame"]["cycles"].get<double>(), 1.0, 0.05);
   for (const char* path : {"frame.cycles", "memory.dram.bytes", "memory.l2.accesses"})
     EXPECT_EQ(succ["intervals"]["replicates"][path].size(), succ["intervals"]["batches"].get<size_t>()) << path;
   EXPECT_NE(jack_log.find("batches (jackknife; "), std::string::npos) << jack_log;
