@@ -292,9 +292,11 @@ std::string FrameReport::summary() const {
     const stats::Values& rows = v.group("memory.dram.banked.channels");
     const double requests = rows.number("row_hits") + rows.number("row_misses") + rows.number("row_conflicts");
     const auto share = [&](const char* name) { return requests > 0 ? 100.0 * rows.number(name) / requests : 0.0; };
-    s += format("DRAM rows      %.1f%% hits, %.1f%% misses, %.1f%% conflicts; mean read latency %.1f cycles [%s]\n",
+    s += format("DRAM rows      %.1f%% hits, %.1f%% misses, %.1f%% conflicts; mean read latency %.1f cycles; "
+                "%.1f requests in service and %.1f reads in flight at once, on average [%s]\n",
                 share("row_hits"), share("row_misses"), share("row_conflicts"),
-                rows.number("mean_read_latency_cycles"), m);
+                rows.number("mean_read_latency_cycles"), rows.number("bank_level_parallelism"),
+                rows.number("mean_reads_in_flight"), m);
   }
   const std::pair<const char*, const char*> levels[] = {{"L1 data", "memory.l1d.by_data"},
                                                          {"interconnect", "memory.interconnect.by_data"},

@@ -113,7 +113,8 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   const bool counted = transport::counts(ext);  // sampled timing measures part of each detailed window only
   Cycle end = 0, queued = 0;
   if (banked_) {
-    const BankedDram::Result r = banked_->access(ch, addr, bytes, write, t, now, bus, counted);
+    const BankedDram::Result r =
+        banked_->access(ch, addr, bytes, write, t, now, bus, counted, transport::data_class_of(ext));
     end = r.end;
     queued = r.queued;
   } else {

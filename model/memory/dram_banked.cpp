@@ -1,6 +1,9 @@
 #include "model/memory/dram_banked.h"
 
+#include "model/stats/stat_values.h"
+
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace strata::memory {
@@ -63,10 +66,62 @@ BankedDram::BankedDram(const DramConfig& config)
              "Cycles from each read request to its last data, summed.");
     g->ratio("mean_read_latency_cycles", "read_latency_cycles", {"read_requests"},
              "Mean cycles from a read request to its last data (cycles, though a ratio).");
+    g->count("busy_bank_cycles", &k.busy_bank_cycles, Unit::kCycles,
+             "Cycles from each request's first command (PRE, ACT or column) to its last data, summed.");
+    // Over the frame's simulated time (Little's law): the mean number of requests being served
+    // (banks busy at once) and of reads waiting or being served (the request queue's occupancy).
+    const auto per_frame_cycle = [](const char* what) {
+      return [what](const stats::Scope& sc) {
+        const stats::Values& root = sc.root();
+        const double cycles = root.has("frame.cycles") ? root.number("frame.cycles") : 0.0;
+        return cycles > 0 ? sc.self().number(what) / cycles : std::nan("");
+      };
+    };
+    g->derived("bank_level_parallelism", Unit::kRatio,
+               "busy_bank_cycles / frame cycles: requests in service at once, on average (banks busy).",
+               per_frame_cycle("busy_bank_cycles"));
+    g->derived("mean_reads_in_flight", Unit::kRatio,
+               "read_latency_cycles / frame cycles: reads queued or in service at once, on average (Little's law).",
+               per_frame_cycle("read_latency_cycles"));
+    auto h = std::make_unique<stats::Group>(
+        "read_latency_histogram", "Read requests by latency (request to last data): below_16, then from_N holds N to "
+                                  "2N - 1 cycles (N a power of two); the last bucket has no upper end. The buckets "
+                                  "sum to read_requests.");
+    for (unsigned bucket = 0; bucket < kLatencyBuckets; ++bucket) {
+      const uint64_t from = kFirstLatencyBucket << (bucket > 0 ? bucket - 1 : 0);
+      const std::string name = bucket == 0 ? "below_" + std::to_string(kFirstLatencyBucket) : "from_" + std::to_string(from);
+      const std::string what = bucket == 0                       ? "Reads of fewer than " + std::to_string(from) + " cycles."
+                               : bucket + 1 < kLatencyBuckets ? "Reads of " + std::to_string(from) + " to " +
+                                                               std::to_string(2 * from - 1) + " cycles."
+                                                         : "Reads of " + std::to_string(from) + " cycles or more.";
+      h->count(name.c_str(), &k.read_latency_buckets[bucket], Unit::kCount, what.c_str());
+    }
+    g->child(h.get());
+    owned_groups_.push_back(std::move(h));
     each.push_back(g.get());
     channel_stats_.push_back(std::move(g));
   }
   stats_.instances("channels", each, "channel", "Banked DRAM channel");
+  auto by_data = std::make_unique<stats::Group>(
+      "rows_by_data", "Row outcomes of the requests, by what the addressed bytes hold; the classes sum to the "
+                      "channels' row_hits, row_misses and row_conflicts.");
+  for (unsigned i = 0; i < transport::kDataClassCount; ++i) {
+    const auto c = static_cast<transport::DataClass>(i);
+    auto g = std::make_unique<stats::Group>(transport::data_class_name(c), "Requests for data of this class.");
+    g->count("row_hits", &by_data_[i].hits, Unit::kCount, "Requests whose row was open.");
+    g->count("row_misses", &by_data_[i].misses, Unit::kCount, "Requests to a closed bank.");
+    g->count("row_conflicts", &by_data_[i].conflicts, Unit::kCount, "Requests to a bank with another row open.");
+    g->derived("row_hit_rate", Unit::kRatio, "row_hits / (row_hits + row_misses + row_conflicts).",
+               [](const stats::Scope& sc) {
+                 const stats::Values& v = sc.self();
+                 const double n = v.number("row_hits") + v.number("row_misses") + v.number("row_conflicts");
+                 return n > 0 ? v.number("row_hits") / n : std::nan("");
+               });
+    by_data->child(g.get());
+    owned_groups_.push_back(std::move(g));
+  }
+  stats_.child(by_data.get());
+  owned_groups_.push_back(std::move(by_data));
 }
 
 void BankedDram::set_clock_ghz(double ghz) {
@@ -177,7 +232,8 @@ uint64_t BankedDram::overflow_bookings() const {
 }
 
 BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t,
-                                      Cycle now, transport::ReservationCalendar& bus, bool count) {
+                                      Cycle now, transport::ReservationCalendar& bus, bool count,
+                                      transport::DataClass data) {
   Channel& ch = channels_[channel];
   ChannelCounters scratch;
   ChannelCounters& k = count ? counters_[channel] : scratch;
@@ -209,15 +265,11 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   if (bank.last_act != kNever && arrive + timing_.rc <= bank.last_act) {
     const Cycle act = place_act(arrive);
     if (act + timing_.rc <= bank.last_act) {
-      ++k.row_misses;
       ++k.activates;
       ++k.precharges;
       book_act(rank, at.group, act);
       const Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
-      if (!write) {
-        ++k.read_requests;
-        k.read_latency_cycles += r.end - t;
-      }
+      count_request(k, count, data, false, false, write, t, act, r.end);
       return r;
     }
   }
@@ -225,12 +277,11 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   // The request's first command (PRE, ACT, or its first column command on a row hit) must
   // come before the rank's next refresh; else the refresh goes first and the plan is redone.
   bool hit = false, conflict = false;
-  Cycle pre = 0, act = 0, col_ready = 0;
+  Cycle pre = 0, act = 0, col_ready = 0, first = 0;
   for (;;) {
     refresh_until(ch, at.rank, arrive, k);
     hit = bank.open && bank.row == at.row;
     conflict = bank.open && !hit;
-    Cycle first;
     if (hit) {
       col_ready = later(arrive, bank.next_col);
       first = col_ready;
@@ -246,15 +297,8 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     refresh_until(ch, at.rank, first, k);
   }
 
-  if (hit) {
-    ++k.row_hits;
-  } else {
-    if (conflict) {
-      ++k.row_conflicts;
-      ++k.precharges;
-    } else {
-      ++k.row_misses;
-    }
+  if (!hit) {
+    if (conflict) ++k.precharges;
     ++k.activates;
     bank.open = true;
     bank.row = at.row;
@@ -272,11 +316,23 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     bank.open = false;
     bank.next_act = later(bank.next_act, bank.next_pre + timing_.rp);
   }
+  count_request(k, count, data, hit, conflict, write, t, first, result.end);
+  return result;
+}
+
+void BankedDram::count_request(ChannelCounters& k, bool count, transport::DataClass data, bool hit, bool conflict,
+                               bool write, Cycle t, Cycle first, Cycle end) {
+  (hit ? k.row_hits : conflict ? k.row_conflicts : k.row_misses) += 1;
+  k.busy_bank_cycles += end > first ? end - first : 0;
   if (!write) {
     ++k.read_requests;
-    k.read_latency_cycles += result.end - t;
+    k.read_latency_cycles += end - t;
+    ++k.read_latency_buckets[latency_bucket(end - t)];
   }
-  return result;
+  if (count) {
+    RowOutcomes& d = by_data_[static_cast<unsigned>(data)];
+    (hit ? d.hits : conflict ? d.conflicts : d.misses) += 1;
+  }
 }
 
 // Column commands, one per column_bytes, each as early as tCCD (and tWTR for a read after a

@@ -25,6 +25,7 @@
 #include "model/memory/dram_timing.h"
 #include "model/stats/stat_group.h"
 #include "tlm/clock.h"
+#include "tlm/data_class.h"
 #include "tlm/reservation_calendar.h"
 
 #include <array>
@@ -38,6 +39,8 @@ class BankedDram {
  public:
   using Cycle = transport::Cycle;
 
+  static constexpr unsigned kLatencyBuckets = 9;
+  static constexpr uint64_t kFirstLatencyBucket = 16;
   struct ChannelCounters {
     uint64_t row_hits = 0;       // the request's row was open
     uint64_t row_misses = 0;     // its bank was closed (precharged): ACT only
@@ -47,6 +50,21 @@ class BankedDram {
     uint64_t refresh_cycles = 0;  // tRFC per refresh of each rank: the rank can do nothing else
     uint64_t read_requests = 0;
     uint64_t read_latency_cycles = 0;  // request to last data, summed over read requests
+    // Read latency in powers of two: bucket 0 below kFirstLatencyBucket cycles, then bucket b
+    // holds kFirstLatencyBucket << (b - 1) to twice that, less one; the last has no upper end.
+    std::array<uint64_t, kLatencyBuckets> read_latency_buckets{};
+    // Cycles from each request's first command (PRE, ACT or its first column command) to its
+    // last data, summed: over the frame's cycles, the banks busy at once.
+    uint64_t busy_bank_cycles = 0;
+  };
+  static unsigned latency_bucket(uint64_t cycles) {
+    unsigned b = 0;
+    for (uint64_t from = kFirstLatencyBucket; cycles >= from && b + 1 < kLatencyBuckets; from <<= 1) ++b;
+    return b;
+  }
+  // Row outcomes of the requests for each class of data (summed over channels).
+  struct RowOutcomes {
+    uint64_t hits = 0, misses = 0, conflicts = 0;
   };
 
   // `config` must have been validated. Times are converted at 1 GHz until set_clock_ghz.
@@ -60,14 +78,17 @@ class BankedDram {
   // Serves one request of `bytes` at `addr` (channel `channel`, already chosen by the
   // caller's channel hash) arriving at cycle `t`; its data is booked on `bus`. `count`: add to
   // the statistics (sampled timing counts its detailed windows only).
-  // `now`: global time, before which nothing can be requested any more.
+  // `now`: global time, before which nothing can be requested any more. `data`: what the
+  // bytes hold (row outcomes by class).
   Result access(uint32_t channel, uint64_t addr, uint32_t bytes, bool write, Cycle t, Cycle now,
-                transport::ReservationCalendar& bus, bool count);
+                transport::ReservationCalendar& bus, bool count,
+                transport::DataClass data = transport::DataClass::kOther);
   // Fidelity: command bookings beyond a calendar's horizon (placed without the rank-level
   // constraints); must be 0.
   uint64_t overflow_bookings() const;
 
   const ChannelCounters& channel(uint32_t c) const { return counters_[c]; }
+  const RowOutcomes& by_data(transport::DataClass c) const { return by_data_[static_cast<unsigned>(c)]; }
   const stats::Group& stats() const { return stats_; }
   const DramTiming& timing() const { return timing_; }
 
@@ -125,9 +146,14 @@ class BankedDram {
   uint32_t interleave_shift_ = 0, column_shift_ = 0, bank_bits_ = 0;
   std::vector<Channel> channels_;
   std::vector<ChannelCounters> counters_;  // never resized: the statistics point into it
+  std::array<RowOutcomes, transport::kDataClassCount> by_data_{};
+  // Counts one request's outcome and, for a read, its latency; `first`: its first command.
+  void count_request(ChannelCounters& k, bool count, transport::DataClass data, bool hit, bool conflict,
+                     bool write, Cycle t, Cycle first, Cycle end);
   uint64_t overflows_ = 0;
   stats::Group stats_;
   std::vector<std::unique_ptr<stats::Group>> channel_stats_;
+  std::vector<std::unique_ptr<stats::Group>> owned_groups_;  // histograms and data classes
 };
 
 }  // namespace strata::memory

@@ -77,6 +77,28 @@ TEST(DramBanked, ReadToAClosedBankTakesRcdPlusClPlusBurst) {
   EXPECT_EQ(rig.k().row_misses, 1u);
   EXPECT_EQ(rig.k().activates, 1u);
   EXPECT_EQ(rig.k().read_latency_cycles, 27u);
+  // 27 cycles: the from_16 bucket (16-31); the bank was busy from the ACT (0) to the data's end.
+  EXPECT_EQ(rig.k().read_latency_buckets[BankedDram::latency_bucket(27)], 1u);
+  EXPECT_EQ(BankedDram::latency_bucket(27), 1u);
+  EXPECT_EQ(rig.k().busy_bank_cycles, 27u);
+  // An unclassified payload (no data class) counts as "other".
+  EXPECT_EQ(rig.dram.banked()->by_data(transport::DataClass::kOther).misses, 1u);
+  stats::Values v = stats::Values::snapshot(rig.dram.stats());
+  v.derive();
+  EXPECT_EQ(v.count("banked.channels.read_latency_histogram.from_16"), 1u);
+  EXPECT_EQ(v.count("banked.rows_by_data.other.row_misses"), 1u);
+  EXPECT_DOUBLE_EQ(v.number("banked.rows_by_data.other.row_hit_rate"), 0.0);
+}
+
+TEST(DramBanked, LatencyBucketsArePowersOfTwoFromSixteen) {
+  EXPECT_EQ(BankedDram::latency_bucket(0), 0u);
+  EXPECT_EQ(BankedDram::latency_bucket(15), 0u);
+  EXPECT_EQ(BankedDram::latency_bucket(16), 1u);
+  EXPECT_EQ(BankedDram::latency_bucket(31), 1u);
+  EXPECT_EQ(BankedDram::latency_bucket(32), 2u);
+  EXPECT_EQ(BankedDram::latency_bucket(2047), 7u);
+  EXPECT_EQ(BankedDram::latency_bucket(2048), 8u);  // the last bucket: 2048 and more
+  EXPECT_EQ(BankedDram::latency_bucket(1u << 30), BankedDram::kLatencyBuckets - 1);
 }
 
 TEST(DramBanked, RowHitTakesClPlusBurst) {
@@ -229,6 +251,21 @@ TEST(DramBanked, RandomTrafficCountsAddUpAndRefreshKeepsPace) {
   }
   EXPECT_EQ(requests, kRequests);
   EXPECT_EQ(dram.overflow_bookings(), 0u);
+  // The histogram's buckets sum to the reads, the data classes' outcomes to the requests, and
+  // every request kept a bank busy for at least its own column and burst.
+  uint64_t by_class = 0;
+  for (unsigned i = 0; i < transport::kDataClassCount; ++i) {
+    const BankedDram::RowOutcomes& o = dram.banked()->by_data(static_cast<transport::DataClass>(i));
+    by_class += o.hits + o.misses + o.conflicts;
+  }
+  EXPECT_EQ(by_class, kRequests);
+  for (uint32_t ch = 0; ch < c.channels; ++ch) {
+    const BankedDram::ChannelCounters& k = dram.banked()->channel(ch);
+    uint64_t bucketed = 0;
+    for (const uint64_t n : k.read_latency_buckets) bucketed += n;
+    EXPECT_EQ(bucketed, k.read_requests) << ch;
+    EXPECT_GE(k.busy_bank_cycles, dram.channel(ch).requests * 2 * kBurst) << ch;  // two columns each
+  }
 }
 
 // Temporal decoupling: a TM that ran ahead sends its request first. A request that arrives
