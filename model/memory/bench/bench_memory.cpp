@@ -230,6 +230,25 @@ int sc_main(int argc, char** argv) {
                std::to_string(dram.channel(0).queued_cycles);
       });
     }
+    {  // Banked DRAM (the GDDR5 preset, memory.dram.model = banked): the same random lines
+      System& s = new_system("dram_banked");
+      DramConfig banked;
+      banked.model = DramModel::kBanked;
+      auto& dram = make<Dram>(s, ("dram_banked_" + m).c_str(), banked, backing);
+      auto& fan = make<Fanin>(s, ("dram_banked_fan_" + m).c_str());
+      fan.out.bind(dram.target);
+      add_threads(s, "dram_banked_" + m, [&](MemoryInitiator& i) { i.socket.bind(fan.in); });
+      s.traffic = [](MemoryInitiator& me, uint32_t t, uint64_t n) {
+        std::mt19937 rng(t);
+        uint8_t line[64];
+        for (uint64_t k = 0; k < n; ++k) me.load((rng() % (1u << 24)) * 64, line, 64);
+      };
+      describe.push_back([&dram] {
+        const BankedDram::ChannelCounters& k = dram.banked()->channel(0);
+        return "row conflicts ch0 " + std::to_string(k.row_conflicts) + ", mean read latency ch0 " +
+               std::to_string(k.read_requests ? double(k.read_latency_cycles) / double(k.read_requests) : 0.0);
+      });
+    }
     {  // Interconnect: 32 TM ports, 16 L2 banks behind (3 cycles), 10 % stream operations
       System& s = new_system("interconnect");
       InterconnectConfig xc;
