@@ -312,7 +312,7 @@ TEST(BatchMeans, TheReplicatesBehindAnIntervalAreHandedBackInBatchOrder) {
   ASSERT_EQ(reps[0].size(), 6u);
   EXPECT_NEAR(successive_difference_half_width(reps[0], 0.95), whole, 1e-9);
   // The third replicate drops the third window: its misses and its measured instructions.
-  EXPECT_NEAR(reps[0][2], std::llround((60.0 - 6) * 6000.0 / (600.0 - 80)), 1e-9);
+  EXPECT_NEAR(reps[0][2], static_cast<double>(std::llround((60.0 - 6) * 6000.0 / (600.0 - 80))), 1e-9);
 }
 
 }  // namespace
