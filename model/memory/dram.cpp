@@ -70,7 +70,14 @@ Dram::Dram(sc_core::sc_module_name name, const DramConfig& config, SparseMemory&
     tr_depth_.push_back(trace_.add_level("channel" + std::to_string(c) + ".queue_cycles"));
   }
   g.instances("channels", each, "channel", "DRAM channel", false);
-  if (banked_) g.child(&banked_->stats());
+  if (banked_) {
+    g.child(&banked_->stats());
+    // The banked model's row outcomes over the whole DRAM, per cycle of each window, and the
+    // latest read's latency in it.
+    for (const char* outcome : {"row_hits", "row_misses", "row_conflicts"})
+      tr_rows_.push_back(trace_.add_rate(std::string(outcome) + "_per_cycle"));
+    tr_latency_ = trace_.add_level("read_latency_cycles");
+  }
 }
 
 void Dram::set_clock(const transport::Clock& clock) {
@@ -112,11 +119,13 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   bus.retire_before(now);
   const bool counted = transport::counts(ext);  // sampled timing measures part of each detailed window only
   Cycle end = 0, queued = 0;
+  BankedDram::RowOutcome row = BankedDram::RowOutcome::kMiss;
   if (banked_) {
     const BankedDram::Result r =
         banked_->access(ch, addr, bytes, write, t, now, bus, counted, transport::data_class_of(ext));
     end = r.end;
     queued = r.queued;
+    row = r.row;
   } else {
     const Cycle data_from = t + config_.latency_cycles;
     const transport::Booking b = bus.book(data_from, bytes);
@@ -147,6 +156,10 @@ void Dram::b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay) {
   if (trace_.enabled()) {
     trace_.count(tr_bandwidth_[ch], bytes, now);
     trace_.level(tr_depth_[ch], static_cast<double>(bus.backlog_end() > now ? bus.backlog_end() - now : 0), now);
+    if (banked_) {
+      trace_.count(tr_rows_[static_cast<unsigned>(row)], 1, now);
+      if (!write) trace_.level(tr_latency_, static_cast<double>(end - t), now);
+    }
   }
   if (ext != nullptr) ext->served_by = transport::ServedBy::kDram;
   gp.set_response_status(tlm::TLM_OK_RESPONSE);

@@ -63,7 +63,8 @@ class Dram : public sc_core::sc_module {
   SparseMemory& backing() { return backing_; }
   const BankedDram* banked() const { return banked_.get(); }  // null unless model = banked
   uint64_t overflow_bookings() const;
-  // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead).
+  // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead);
+  // banked, over the whole DRAM: row hits, misses and conflicts per cycle, the latest read latency.
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
   void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
 
@@ -84,6 +85,8 @@ class Dram : public sc_core::sc_module {
   std::unique_ptr<DataTrafficStats> by_data_stats_;
   WindowTrace trace_;
   std::vector<std::size_t> tr_bandwidth_, tr_depth_;
+  std::vector<std::size_t> tr_rows_;  // banked: hits, misses, conflicts (RowOutcome order)
+  std::size_t tr_latency_ = 0;
 };
 
 }  // namespace strata::memory

@@ -268,7 +268,8 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
       ++k.activates;
       ++k.precharges;
       book_act(rank, at.group, act);
-      const Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
+      Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
+      r.row = RowOutcome::kMiss;
       count_request(k, count, data, false, false, write, t, act, r.end);
       return r;
     }
@@ -309,7 +310,8 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     book_act(rank, at.group, act);
   }
 
-  const Result result = issue_columns(rank, &bank, at.group, col_ready, bytes, write, bus, k);
+  Result result = issue_columns(rank, &bank, at.group, col_ready, bytes, write, bus, k);
+  result.row = hit ? RowOutcome::kHit : conflict ? RowOutcome::kConflict : RowOutcome::kMiss;
 
   if (config_.banked.row_policy == RowPolicy::kClosed) {  // auto-precharge after the last column
     ++k.precharges;

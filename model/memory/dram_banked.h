@@ -71,9 +71,11 @@ class BankedDram {
   explicit BankedDram(const DramConfig& config);
   void set_clock_ghz(double ghz);
 
+  enum class RowOutcome : uint8_t { kHit, kMiss, kConflict };
   struct Result {
     Cycle end = 0;     // one past the request's last data cycle
     Cycle queued = 0;  // cycles its data waited for the bus beyond the commands' timing
+    RowOutcome row = RowOutcome::kMiss;
   };
   // Serves one request of `bytes` at `addr` (channel `channel`, already chosen by the
   // caller's channel hash) arriving at cycle `t`; its data is booked on `bus`. `count`: add to
