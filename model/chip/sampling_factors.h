@@ -18,16 +18,15 @@ double sampled_model_cycles(const stats::Values& raw);
 
 // The frame as sampled timing estimates it from raw counts: the middle stratum's (measured
 // counts weighted by their windows, exact totals whole) and the strata timed in full (the
-// frame's head and drain, batch_means.h), each scaled by its own factors: frame cycles are the
-// samples' frame time (so rates and static energies vary with it in a replicate), every count
+// frame's head and drain, batch_means.h), each scaled by its own factors: frame cycles by the
+// change in the samples' frame time (so rates and static energies vary with it), every count
 // by its basis, then the ratios and formulas. The report and the error target's planner
 // estimate through this one class, so the interval the planner aims at is the interval the
 // report prints.
 class SampledEstimate {
  public:
   // `weighted_raw`: the middle's raw totals the estimate is centred on; `strata`: the raw
-  // counts of each stratum; `simulated_cycles`: the frame's simulated length so far (the frame
-  // time only when nothing was measured).
+  // counts of each stratum; `simulated_cycles`: the frame's simulated length so far.
   SampledEstimate(const stats::Values& weighted_raw, const std::vector<stats::Values>& strata, double simulated_cycles);
   // The estimate from the middle's raw totals `raw` (the centre, or a replicate), before the
   // ratios and formulas are derived.
@@ -43,7 +42,6 @@ class SampledEstimate {
   double strata_model_cycles_ = 0;
   double simulated_cycles_;
   double full_model_cycles_;
-  bool middle_measured_ = true;
 };
 
 }  // namespace strata::chip

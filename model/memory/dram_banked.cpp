@@ -270,7 +270,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
       book_act(rank, at.group, act);
       Result r = issue_columns(rank, nullptr, at.group, act + timing_.rcd, bytes, write, bus, k);
       r.row = RowOutcome::kMiss;
-      count_request(k, count, data, false, false, write, t, act, r.end);
+      count_request(k, count, data, r.row, write, t, act, r.end);
       return r;
     }
   }
@@ -318,12 +318,13 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
     bank.open = false;
     bank.next_act = later(bank.next_act, bank.next_pre + timing_.rp);
   }
-  count_request(k, count, data, hit, conflict, write, t, first, result.end);
+  count_request(k, count, data, result.row, write, t, first, result.end);
   return result;
 }
 
-void BankedDram::count_request(ChannelCounters& k, bool count, transport::DataClass data, bool hit, bool conflict,
-                               bool write, Cycle t, Cycle first, Cycle end) {
+void BankedDram::count_request(ChannelCounters& k, bool count, transport::DataClass data, RowOutcome row, bool write,
+                               Cycle t, Cycle first, Cycle end) {
+  const bool hit = row == RowOutcome::kHit, conflict = row == RowOutcome::kConflict;
   (hit ? k.row_hits : conflict ? k.row_conflicts : k.row_misses) += 1;
   k.busy_bank_cycles += end > first ? end - first : 0;
   if (!write) {

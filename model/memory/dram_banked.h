@@ -150,8 +150,8 @@ class BankedDram {
   std::vector<ChannelCounters> counters_;  // never resized: the statistics point into it
   std::array<RowOutcomes, transport::kDataClassCount> by_data_{};
   // Counts one request's outcome and, for a read, its latency; `first`: its first command.
-  void count_request(ChannelCounters& k, bool count, transport::DataClass data, bool hit, bool conflict,
-                     bool write, Cycle t, Cycle first, Cycle end);
+  void count_request(ChannelCounters& k, bool count, transport::DataClass data, RowOutcome row, bool write, Cycle t,
+                     Cycle first, Cycle end);
   uint64_t overflows_ = 0;
   stats::Group stats_;
   std::vector<std::unique_ptr<stats::Group>> channel_stats_;
