@@ -118,10 +118,10 @@ def main():
               for key in sorted(set(lt) & set(sampled))]
     clocks = [c for c in clocks if c[1] is not None and c[3]]
     if clocks:
-        # Since 2026-12-06 the frame time is the samples' estimate; the simulated clock beside it
-        # shows what the estimate corrects (docs/sampled-timing.md, "The frame time").
+        # Runs made while the frame time was the samples' estimate (2026-12-06) report it as
+        # frame.cycles; the simulated clock beside it (docs/sampled-timing.md, "The frame time").
         print()
-        print("Frame time against LT: the samples' estimate (reported) and the simulated clock, "
+        print("Frame time against LT: as reported (the clock, or the samples' estimate on runs of 2026-12-06) and the simulated clock, "
               "each against the reported interval:")
         print("| design | scene | seed | estimate | clock | half-width |")
         print("|---|---|---|---|---|---|")
