@@ -29,6 +29,9 @@ RenderResult render_on_iss(const scenes::SceneImage& image, const RenderSettings
   // path and waits for pixels forever.
   const iss::FunctionalStrataHook::Config hook_config;
   footprint.path_slots = chip::path_slots_for(hook_config.stream_capacity, footprint.pixels);
+  // Per-sample slots: a compact streaming kernel then runs a pixel's samples together (the
+  // other kernels leave them unused).
+  footprint.sample_slots = chip::sample_slots_for(footprint.pixels, settings.samples_per_pixel);
   const uint64_t data_bytes = chip::frame_layout_bytes(footprint);
   if (data_bytes > 0xC0000000ull)
     throw std::runtime_error("iss render: scene image and frame do not fit the 32-bit guest address space");

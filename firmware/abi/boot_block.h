@@ -14,7 +14,12 @@ struct BootBlock {
   uint32_t counters;      // one RayCounters per thread, indexed by the global thread id
   uint32_t path_table;    // streaming kernels: one PathRecord per path in flight
   uint32_t path_slots;    // how many PathRecords there are
-  uint32_t pad[2];
+  // Compact streaming kernels at more than one sample per pixel: width * height * spp Pixels,
+  // one per sample (pixel * spp + s), summed into the framebuffer in sample order once every
+  // sample is done, so a pixel's samples can be in flight together. 0: none, a pixel's samples
+  // run one after another.
+  uint32_t sample_slots;
+  uint32_t pad;
 };
 
 constexpr const char* kBootBlockSymbol = "strata_boot";

@@ -24,8 +24,14 @@ static_assert(sizeof(FrameParams) == 96, "FrameParams layout");
 
 // Global registers (strata.atomic*, strata.global*) the kernels and the platform agree on.
 constexpr uint32_t kPixelCounterRegister = 0;  // pixels handed out (baseline: also the pixels done)
-constexpr uint32_t kPixelsDoneRegister = 1;    // streaming kernels: pixels whose every sample is finished
+// Streaming kernels: work items finished: pixels whose every sample is finished or, with sample
+// slots, samples finished.
+constexpr uint32_t kPixelsDoneRegister = 1;
 constexpr uint32_t kFillSlotRegister = 2;      // streaming kernels: path slots handed out by the initial fill
+// Compact streaming kernels with sample slots (BootBlock::sample_slots): the samples are the
+// work, handed out in pixel-major order (pixel * spp + s), then the pixels are resolved.
+constexpr uint32_t kSampleCounterRegister = 3;   // samples handed out
+constexpr uint32_t kResolveCounterRegister = 4;  // pixels handed out to be summed from their slots
 
 // The streaming kernels keep one record per path in flight in a table the platform places
 // (BootBlock::path_table); the platform sizes the table from this.

@@ -8,7 +8,7 @@ using namespace strata::kernels;
 
 // In .data, not .bss: crt0 clears .bss after the platform has filled this in.
 extern "C" {
-__attribute__((used, section(".data"))) BootBlock strata_boot = {0, 0, 0, 0, 0, 0, {0, 0}};
+__attribute__((used, section(".data"))) BootBlock strata_boot = {0, 0, 0, 0, 0, 0, 0, 0};
 }
 
 int main() {

@@ -16,16 +16,28 @@
 //   58-63  radiance so far (packed RGB)          radiance so far (packed RGB)
 //
 // The shadow ray is traced before the bounce ray is issued (the bounce starts from the shadow
-// ray's origin, offset_ray_origin(p, n) for both), so a path never has two rays in flight and
-// its pixel is written by one thread at a time: the sum over samples goes through the
-// framebuffer in the twin's order. Throughput and radiance are kept packed
-// (PackedPathArithmetic): the native twin with the same arithmetic computes the same image.
+// ray's origin, offset_ray_origin(p, n) for both), so a path never has two rays in flight.
+// Throughput and radiance are kept packed (PackedPathArithmetic): the native twin with the same
+// arithmetic computes the same image.
+//
+// The work handed out is a pixel's samples. With one sample per pixel, a path is a pixel. With
+// more, the platform gives per-sample slots (BootBlock::sample_slots) and the samples are the
+// work: each path is one sample, a pixel's samples are in flight together, and each writes its
+// radiance to its own slot. Once every sample is done, the threads sum each pixel's slots in
+// sample order (0 + r0, then + r1, ...), the twin's order, whatever order the samples finished
+// in. Without slots, a path runs its pixel's samples one after another and the running sum
+// lives in the framebuffer.
 #pragma once
 
 #include "firmware/kernels/packed_color.h"
 #include "firmware/kernels/streams_kernel.h"
 
 namespace strata::kernels {
+
+// The per-sample slots the platform placed (BootBlock::sample_slots), or null.
+struct SampleSlots {
+  Pixel* pixels;
+};
 
 struct CompactRay {
   StreamRay ray;
@@ -48,8 +60,9 @@ class CompactPaths {
  public:
   using Ray = CompactRay;
 
-  CompactPaths(StreamPort<Machine>& port, const KernelContext& ctx)
+  CompactPaths(StreamPort<Machine>& port, const KernelContext& ctx, const SampleSlots& slots)
       : port_(port), ctx_(ctx), f_(*ctx.frame), pixels_(f_.width * f_.height),
+        samples_(pixels_ * f_.samples_per_pixel), slots_(slots.pixels),
         inv_spp_(1.0f / float(f_.samples_per_pixel)), unit_(pack_color({1.0f, 1.0f, 1.0f})),
         black_(pack_color({0.0f, 0.0f, 0.0f})) {}
 
@@ -80,11 +93,38 @@ class CompactPaths {
     return {origin, shadow_direction(ctx_.scene, origin), 0.0f, 1.0f};
   }
 
-  bool start_pixel(uint32_t) {
+  // Out of line: a path starts once, and inlined into the kernel's loop its two ways of
+  // handing out work made GCC spill the traversal state there (+9% loads on a Cornell frame).
+  __attribute__((noinline)) bool start_pixel(uint32_t) {
+    if (slots_) {
+      const uint32_t sample = port_.machine.atomic_increment(kSampleCounterRegister);
+      if (sample >= samples_) return false;
+      start_sample(sample / f_.samples_per_pixel, sample);
+      return true;
+    }
     const uint32_t pixel = port_.machine.atomic_increment(kPixelCounterRegister);
     if (pixel >= pixels_) return false;
     start_sample(pixel, pixel * f_.samples_per_pixel);
     return true;
+  }
+
+  // The work items the kernel waits for (kPixelsDoneRegister counts them done).
+  uint32_t work_items() const { return slots_ ? samples_ : pixels_; }
+
+  // After every path is done: each pixel's samples summed from their slots in sample order,
+  // the pixels shared out among the threads. Once per thread, out of line.
+  __attribute__((noinline)) void resolve() {
+    if (!slots_) return;
+    const uint32_t spp = f_.samples_per_pixel;
+    for (;;) {
+      const uint32_t pixel = port_.machine.atomic_increment(kResolveCounterRegister);
+      if (pixel >= pixels_) return;
+      const Pixel* slot = slots_ + pixel * spp;
+      Vec3f sum{0.0f, 0.0f, 0.0f};
+      for (uint32_t s = 0; s < spp; ++s) sum = sum + load_vec3(slot[s].rgb);
+      const Vec3f avg = sum * inv_spp_;
+      ctx_.framebuffer[pixel] = {{avg.x, avg.y, avg.z}};
+    }
   }
 
   void complete(const Ray& r, const TraversalState& s, const TraceRay& ray) {
@@ -167,10 +207,17 @@ class CompactPaths {
     emit_closest(camera_ray(f_, pixel, sample_index), kPrimaryRay, sample_index, 0u, unit_, black_);
   }
 
-  // The pixel's running sum lives in the framebuffer between its samples: only this path
-  // writes the pixel, so the sum has the twin's order (0 + r0, then + r1, ...).
+  // With slots, the sample's radiance waits in its own slot for resolve(). Without, the pixel's
+  // running sum lives in the framebuffer between its samples: only this path writes the pixel,
+  // so the sum has the twin's order (0 + r0, then + r1, ...).
   void finish_sample(uint32_t sample, Vec3f radiance) {
     ++ctx_.counters->paths;
+    if (slots_) {
+      slots_[sample] = {{radiance.x, radiance.y, radiance.z}};
+      port_.machine.atomic_increment(kPixelsDoneRegister);  // a work item: this sample
+      start_pixel(0);
+      return;
+    }
     const uint32_t pixel = sample / f_.samples_per_pixel;
     const uint32_t s = sample - pixel * f_.samples_per_pixel;
     Pixel& out = ctx_.framebuffer[pixel];
@@ -191,6 +238,8 @@ class CompactPaths {
   KernelContext ctx_;
   const FrameParams& f_;
   uint32_t pixels_;
+  uint32_t samples_;  // pixels * spp: the work when the samples run together
+  Pixel* slots_;      // one per sample, or null: a pixel's samples run one after another
   float inv_spp_;
   PackedColor unit_, black_;  // a new path's throughput and radiance
 };

@@ -16,7 +16,7 @@ inline int streams_entry(const BootBlock& boot) {
   Pipeline pipeline;
   const KernelContext ctx = kernel_context(boot, strata_thread_id());
   if constexpr (sizeof(typename PathsOf<RiscvMachine>::Ray) == sizeof(CompactRay))
-    run_streams_kernel<PathsOf>(machine, pipeline, ctx);
+    run_streams_kernel<PathsOf>(machine, pipeline, ctx, SampleSlots{reinterpret_cast<Pixel*>(boot.sample_slots)});
   else
     run_streams_kernel<PathsOf>(machine, pipeline, ctx,
                                 PathTable{reinterpret_cast<PathRecord*>(boot.path_table), boot.path_slots});

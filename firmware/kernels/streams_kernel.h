@@ -57,7 +57,7 @@ class StreamsKernel {
     bounds_.node_shift = log2_u32(h.treelet_bytes / uint32_t(sizeof(BvhNode)));
     bounds_.treelet_shift = log2_u32(h.treelet_bytes);
     bounds_.node_treelets = h.node_treelet_count;
-    pixels_ = ctx_.frame->width * ctx_.frame->height;
+    work_items_ = paths_.work_items();
   }
 
   void run() {
@@ -74,7 +74,7 @@ class StreamsKernel {
     for (;;) {
       const uint32_t treelet = m_.stream_assign();
       if (treelet == kNoStreamTreelet) {
-        if (m_.global_read(kPixelsDoneRegister) >= pixels_) break;
+        if (m_.global_read(kPixelsDoneRegister) >= work_items_) break;
         continue;  // rays are still in other threads' hands
       }
       Ray r;
@@ -83,6 +83,7 @@ class StreamsKernel {
       // buffer and took a new one), so the ray itself says which treelet it is in.
       process(r, bounds_.next_treelet(Paths::state(r)));
     }
+    paths_.resolve();
   }
 
  private:
@@ -124,7 +125,9 @@ class StreamsKernel {
   Paths& paths_;
   KernelContext ctx_;
   TreeletBounds bounds_{};
-  uint32_t pixels_ = 0;
+  // Every path is finished when kPixelsDoneRegister reaches the frame's work items: its pixels,
+  // or its samples when a pixel's samples are in flight together.
+  uint32_t work_items_ = 0;
 };
 
 // Box and triangle tests in general-purpose instructions (the "streams only" design).

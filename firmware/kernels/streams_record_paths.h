@@ -43,6 +43,11 @@ class RecordPaths {
   static void suspend(Ray& r, const TraversalState& s) { store_state(r, s); }
   TraceRay trace_ray(const Ray& r) const { return trace_ray_of(r); }
 
+  // A path record sums its pixel's samples itself: they run one after another, so every pixel
+  // is written by its path when its last sample finishes, and there is nothing to resolve.
+  uint32_t work_items() const { return pixels_; }
+  void resolve() {}
+
   bool start_pixel(uint32_t slot) {
     const uint32_t pixel = port_.machine.atomic_increment(kPixelCounterRegister);
     if (pixel >= pixels_) return false;

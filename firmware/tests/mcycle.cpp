@@ -9,7 +9,7 @@
 using namespace strata::kernels;
 
 extern "C" {
-__attribute__((used, section(".data"))) BootBlock strata_boot = {0, 0, 0, 0, 0, 0, {0, 0}};
+__attribute__((used, section(".data"))) BootBlock strata_boot = {0, 0, 0, 0, 0, 0, 0, 0};
 }
 
 int main() {

@@ -93,7 +93,10 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, *turns_, WindowSampler::Progress{
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
         [this] { return uint64_t{cycles()}; },
-        [this] { return globals_.values[kernels::kPixelCounterRegister] >= pixels_; }});
+        [this] {  // every work item handed out: the frame's drain has begun
+          return samples_together_ ? globals_.values[kernels::kSampleCounterRegister] >= work_items()
+                                   : globals_.values[kernels::kPixelCounterRegister] >= pixels_;
+        }});
 }
 
 Chip::~Chip() = default;
@@ -111,6 +114,11 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   if (in.scene_image_bytes < sizeof(SceneImageHeader))
     throw std::runtime_error("chip: the scene image is smaller than its header");
   pixels_ = in.frame.width * in.frame.height;
+  spp_ = in.frame.samples_per_pixel;
+  // The compact path state runs a pixel's samples together, each summed from its own slot.
+  const bool compact = config_.design.streams && config_.design.path_state == PathStatePlacement::kCompact;
+  const uint64_t sample_slots = compact ? sample_slots_for(pixels_, spp_) : 0u;
+  samples_together_ = sample_slots > 0;
   // Per-TP stacks sit above the kernel, then the frame's data (guest_layout.h). Streaming
   // kernels keep one path record per ray the stream memory can hold.
   const uint64_t stacks = align_up(elf_end, 1 << 16);
@@ -120,6 +128,7 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   f.treelet_bytes = in.treelet_bytes;
   f.pixels = pixels_;
   f.threads = config_.threads();
+  f.sample_slots = sample_slots;
   f.path_slots = config_.design.streams && config_.design.path_state != PathStatePlacement::kCompact
                      ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, pixels_)
                      : 0u;
@@ -168,6 +177,7 @@ transport::Cycle Chip::cycles() const {
 }
 
 uint32_t Chip::pixels_done() const {
+  if (samples_together_) return uint32_t(std::min<uint64_t>(globals_.values[kernels::kPixelsDoneRegister] / spp_, pixels_));
   const uint32_t reg = config_.design.streams ? kernels::kPixelsDoneRegister : kernels::kPixelCounterRegister;
   return std::min(globals_.values[reg], pixels_);
 }

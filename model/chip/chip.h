@@ -58,9 +58,14 @@ class Chip : public sc_core::sc_module {
   std::string error() const;
   transport::Cycle cycles() const;  // when the last TP finished (stopped early: global time reached)
 
-  // Pixels whose every sample is finished (streaming kernels), or handed out (baseline).
+  // Pixels whose every sample is finished (streaming kernels), or handed out (baseline). With a
+  // pixel's samples in flight together, the samples finished, in pixels' worth.
   uint32_t pixels_done() const;
   uint32_t pixel_count() const { return pixels_; }
+  // What the kernel hands out as work: pixels, or (the compact path state at more than one
+  // sample per pixel) samples, whose paths are in flight together.
+  uint64_t work_items() const { return samples_together_ ? uint64_t{pixels_} * spp_ : pixels_; }
+  bool samples_together() const { return samples_together_; }
   uint64_t instructions() const;
 
   std::vector<kernels::Pixel> framebuffer() const;
@@ -98,6 +103,8 @@ class Chip : public sc_core::sc_module {
   GuestLayout layout_;
   transport::DataClassMap data_classes_;
   uint32_t pixels_ = 0;
+  uint32_t spp_ = 1;
+  bool samples_together_ = false;  // the kernel got per-sample slots (guest_layout.h)
   uint32_t node_treelets_ = 0;  // from the scene header: treelets [0, n) hold nodes
   std::unique_ptr<memory::Dram> dram_;
   std::unique_ptr<memory::L2Cache> l2_;

@@ -256,15 +256,20 @@ std::string FrameReport::summary() const {
   if (cfg.design.streams) {
     // What bounds the paths in flight: the stream memory's rays, or the frame's pixels.
     const uint32_t capacity = uint32_t(v.count("memory.stream.capacity"));
-    const uint32_t paths = paths_in_flight_for(capacity, cfg.threads(), chip_.pixel_count());
-    const bool pixel_bound = paths == chip_.pixel_count() && capacity > cfg.threads() &&
-                             capacity - cfg.threads() > chip_.pixel_count();
+    const uint64_t work = chip_.work_items();
+    const uint32_t paths = paths_in_flight_for(capacity, cfg.threads(), work);
+    const bool frame_bound = paths == work && capacity > cfg.threads() && capacity - cfg.threads() > work;
+    const std::string bound =
+        !frame_bound ? "bound by the stream memory, a ray's room kept back per thread"
+        : chip_.samples_together()
+            ? format("bound by the frame's %llu samples (%u pixels x %u, in flight together), not the stream memory",
+                     ull(work), chip_.pixel_count(), uint32_t(work / chip_.pixel_count()))
+            : format("bound by the frame's %u pixels, not the stream memory", chip_.pixel_count());
     s += format("path state     %s: %.2f MB of stream memory hold %u rays (%llu B each), paths in flight at most "
                 "%u (%s)\n",
                 path_state_name(cfg.design.path_state), double(cfg.stream.size_bytes) / 1048576.0, capacity,
                 ull(v.count("memory.stream.sram_bytes_per_ray")), paths,
-                pixel_bound ? format("bound by the frame's %u pixels, not the stream memory", chip_.pixel_count()).c_str()
-                            : "bound by the stream memory, a ray's room kept back per thread");
+                bound.c_str());
   }
   s += format("rays           %llu primary, %llu bounce, %llu shadow (%llu total)%s\n",
               ull(v.count("rays.primary.traced")), ull(v.count("rays.bounce.traced")),

@@ -1,6 +1,7 @@
 #include "model/chip/guest_layout.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -12,13 +13,25 @@ using transport::DataClass;
 
 uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
 
+namespace {
+std::string hex(uint64_t v) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "0x%llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+}  // namespace
+
 uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels) {
   return std::min(stream_capacity_rays, std::max(pixels, 1u));
 }
 
-uint32_t paths_in_flight_for(uint32_t stream_capacity_rays, uint32_t threads, uint32_t pixels) {
+uint32_t paths_in_flight_for(uint32_t stream_capacity_rays, uint32_t threads, uint64_t work_items) {
   const uint32_t fill = stream_capacity_rays > threads ? stream_capacity_rays - threads : 1u;
-  return std::min(fill, std::max(pixels, 1u));
+  return uint32_t(std::min<uint64_t>(fill, std::max<uint64_t>(work_items, 1u)));
+}
+
+uint64_t sample_slots_for(uint32_t pixels, uint32_t samples_per_pixel) {
+  return samples_per_pixel > 1 ? uint64_t{pixels} * samples_per_pixel : 0u;
 }
 
 GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f) {
@@ -27,13 +40,20 @@ GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f) {
   g.scene_image = align_up(base, treelet);
   g.frame = align_up(g.scene_image + f.scene_image_bytes, 64);
   g.framebuffer = align_up(g.frame + sizeof(kernels::FrameParams), 64);
-  g.counters = align_up(g.framebuffer + uint64_t{f.pixels} * sizeof(kernels::Pixel), 64);
+  g.sample_slots = align_up(g.framebuffer + uint64_t{f.pixels} * sizeof(kernels::Pixel), 64);
+  g.counters = align_up(g.sample_slots + f.sample_slots * sizeof(kernels::Pixel), 64);
   g.path_table = align_up(g.counters + uint64_t{f.threads} * sizeof(kernels::RayCounters), 64);
   g.path_slots = f.path_slots;
   g.end = align_up(g.path_table + uint64_t{f.path_slots} * kernels::kPathRecordBytes, 64);
+  if (f.sample_slots == 0) g.sample_slots = 0;  // the boot block's "none"
   if (g.end > 0xFFFFFFFFull)
-    throw std::runtime_error("guest memory: the scene image and frame need " + std::to_string(g.end - base) +
-                             " bytes above 0x" + std::to_string(base) + ", beyond the 32-bit guest address space");
+    throw std::runtime_error(
+        "guest memory: the scene image and frame need " + std::to_string(g.end - base) + " bytes above " +
+        hex(base) + ", beyond the 32-bit guest address space" +
+        (f.sample_slots ? " (of which " + std::to_string(f.sample_slots * sizeof(kernels::Pixel)) +
+                              " bytes are the per-sample slots, one per pixel and sample: fewer samples per pixel "
+                              "or a smaller frame)"
+                        : std::string()));
   return g;
 }
 
@@ -46,7 +66,7 @@ kernels::BootBlock boot_block(const GuestLayout& g) {
   return kernels::BootBlock{static_cast<uint32_t>(g.frame),      static_cast<uint32_t>(g.scene_image),
                             static_cast<uint32_t>(g.framebuffer), static_cast<uint32_t>(g.counters),
                             static_cast<uint32_t>(g.path_table), g.path_slots,
-                            {0, 0}};
+                            static_cast<uint32_t>(g.sample_slots), 0};
 }
 
 transport::DataClassMap data_class_map(const GuestLayout& g, const SceneImageHeader& h) {
@@ -68,7 +88,7 @@ transport::DataClassMap data_class_map(const GuestLayout& g, const SceneImageHea
     m.add(tris_end, g.frame, DataClass::kScene);
   }
   m.add(g.frame, g.framebuffer, DataClass::kThreadData);  // the frame parameters
-  m.add(g.framebuffer, g.counters, DataClass::kFramebuffer);
+  m.add(g.framebuffer, g.counters, DataClass::kFramebuffer);  // with the per-sample slots, if any
   m.add(g.counters, g.path_table, DataClass::kThreadData);  // per-thread ray counters
   m.add(g.path_table, g.end, DataClass::kPathState);
   return m;
