@@ -15,9 +15,9 @@ struct BootBlock {
   uint32_t path_table;    // streaming kernels: one PathRecord per path in flight
   uint32_t path_slots;    // how many PathRecords there are
   // Compact streaming kernels at more than one sample per pixel: width * height * spp Pixels,
-  // one per sample (sample-major: s * width * height + pixel), summed into the framebuffer in
-  // sample order once every sample is done, so a pixel's samples can be in flight together.
-  // 0: none, a pixel's samples run one after another.
+  // one per sample (pixel * spp + s), summed into the framebuffer in sample order once every
+  // sample is done, so a pixel's samples can be in flight together. 0: none, a pixel's samples
+  // run one after another.
   uint32_t sample_slots;
   uint32_t pad;
 };

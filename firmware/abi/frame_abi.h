@@ -29,8 +29,7 @@ constexpr uint32_t kPixelCounterRegister = 0;  // pixels handed out (baseline: a
 constexpr uint32_t kPixelsDoneRegister = 1;
 constexpr uint32_t kFillSlotRegister = 2;      // streaming kernels: path slots handed out by the initial fill
 // Compact streaming kernels with sample slots (BootBlock::sample_slots): the samples are the
-// work, handed out sample-major (every pixel's sample 0, then sample 1, ...), then the pixels
-// are resolved.
+// work, handed out in pixel-major order (pixel * spp + s), then the pixels are resolved.
 constexpr uint32_t kSampleCounterRegister = 3;   // samples handed out
 constexpr uint32_t kResolveCounterRegister = 4;  // pixels handed out to be summed from their slots
 

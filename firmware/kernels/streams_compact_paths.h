@@ -21,10 +21,9 @@
 // arithmetic computes the same image.
 //
 // The work handed out is a pixel's samples. With one sample per pixel, a path is a pixel. With
-// more, the platform gives per-sample slots (BootBlock::sample_slots, sample-major: slot
-// s * pixels + pixel) and the samples are the work, handed out sample-major: each path is one
-// sample, a pixel's samples can be in flight together, and each writes its radiance to its own
-// slot. Once every sample is done, the threads sum each pixel's slots in
+// more, the platform gives per-sample slots (BootBlock::sample_slots) and the samples are the
+// work: each path is one sample, a pixel's samples are in flight together, and each writes its
+// radiance to its own slot. Once every sample is done, the threads sum each pixel's slots in
 // sample order (0 + r0, then + r1, ...), the twin's order, whatever order the samples finished
 // in. Without slots, a path runs its pixel's samples one after another and the running sum
 // lives in the framebuffer.
@@ -98,13 +97,9 @@ class CompactPaths {
   // handing out work made GCC spill the traversal state there (+9% loads on a Cornell frame).
   __attribute__((noinline)) bool start_pixel(uint32_t) {
     if (slots_) {
-      // Sample-major: every pixel's sample 0, then every pixel's sample 1, ... Neighbouring
-      // pixels' slots of one sample share cache lines, and their paths start (and mostly end)
-      // close together, so a slot line is written while the L2 still holds it.
-      const uint32_t work = port_.machine.atomic_increment(kSampleCounterRegister);
-      if (work >= samples_) return false;
-      const uint32_t s = work / pixels_, pixel = work - s * pixels_;
-      start_sample(pixel, pixel * f_.samples_per_pixel + s);
+      const uint32_t sample = port_.machine.atomic_increment(kSampleCounterRegister);
+      if (sample >= samples_) return false;
+      start_sample(sample / f_.samples_per_pixel, sample);
       return true;
     }
     const uint32_t pixel = port_.machine.atomic_increment(kPixelCounterRegister);
@@ -124,8 +119,9 @@ class CompactPaths {
     for (;;) {
       const uint32_t pixel = port_.machine.atomic_increment(kResolveCounterRegister);
       if (pixel >= pixels_) return;
+      const Pixel* slot = slots_ + pixel * spp;
       Vec3f sum{0.0f, 0.0f, 0.0f};
-      for (uint32_t s = 0; s < spp; ++s) sum = sum + load_vec3(slots_[s * pixels_ + pixel].rgb);
+      for (uint32_t s = 0; s < spp; ++s) sum = sum + load_vec3(slot[s].rgb);
       const Vec3f avg = sum * inv_spp_;
       ctx_.framebuffer[pixel] = {{avg.x, avg.y, avg.z}};
     }
@@ -217,9 +213,7 @@ class CompactPaths {
   void finish_sample(uint32_t sample, Vec3f radiance) {
     ++ctx_.counters->paths;
     if (slots_) {
-      const uint32_t pixel = sample / f_.samples_per_pixel;
-      const uint32_t s = sample - pixel * f_.samples_per_pixel;
-      slots_[s * pixels_ + pixel] = {{radiance.x, radiance.y, radiance.z}};
+      slots_[sample] = {{radiance.x, radiance.y, radiance.z}};
       port_.machine.atomic_increment(kPixelsDoneRegister);  // a work item: this sample
       start_pixel(0);
       return;
