@@ -1,6 +1,8 @@
 // Builds a small chip running the baseline kernel on a small scene, for the chip tests.
 #pragma once
 
+#include <cstring>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -50,6 +52,30 @@ struct SmallFrame {
     inputs.frame = sim::make_frame_params(image.header(), settings);
   }
 };
+
+// A small chip (2 TMs of 8 TPs) of `design`, with a 512 KB stream memory holding `frame`'s
+// treelets (unused by a design without streams).
+inline ChipConfig small_design_chip(transport::TimingMode mode, const DesignConfig& design, const SmallFrame& frame) {
+  ChipConfig config = small_chip(mode, 2, 8);
+  config.design = design;
+  config.stream.size_bytes = 512 * 1024;
+  config.stream.treelets = frame.image.header().treelet_count;
+  config.finalize();
+  return config;
+}
+
+// The chip's image and ray counters equal the native twin's, computed with the path arithmetic
+// the design's path state implies (packed where the rays carry the state).
+inline void expect_equals_native_twin(const Chip& chip, const SmallFrame& frame, PathStatePlacement path_state) {
+  sim::RenderSettings twin_settings = frame.settings;
+  if (path_state == PathStatePlacement::kCompact) twin_settings.path_arithmetic = sim::PathArithmetic::kPacked;
+  const sim::RenderResult twin = sim::render_native(frame.image, twin_settings);
+  const std::vector<kernels::Pixel> image = chip.framebuffer();
+  EXPECT_EQ(std::memcmp(image.data(), twin.image.data(), image.size() * sizeof(kernels::Pixel)), 0)
+      << "image differs from the native twin";
+  const kernels::RayCounters rays = chip.ray_counters();
+  EXPECT_EQ(std::memcmp(&rays, &twin.counters, sizeof rays), 0) << "ray statistics differ from the native twin";
+}
 
 // Every level's traffic by data class sums exactly to its totals.
 inline void expect_by_data_sums_to_totals(const nlohmann::json& r) {

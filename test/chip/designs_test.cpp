@@ -45,24 +45,13 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
     scene = scenes::make_cornell({0.2, 1});
   }
   SmallFrame frame(scene, 32, d.kernel);
-  ChipConfig config = small_chip(mode, 2, 8);
-  config.design = {d.name, d.streams, d.pipelines, d.path_state};
-  config.stream.size_bytes = 512 * 1024;
-  config.stream.treelets = frame.image.header().treelet_count;
-  config.finalize();
+  const ChipConfig config = small_design_chip(mode, {d.name, d.streams, d.pipelines, d.path_state}, frame);
   Chip chip("chip", config, frame.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
 
-  // The twin computes with the design's path arithmetic: packed where the rays carry the state.
-  sim::RenderSettings twin_settings = frame.settings;
-  if (d.path_state == PathStatePlacement::kCompact) twin_settings.path_arithmetic = sim::PathArithmetic::kPacked;
-  const sim::RenderResult twin = sim::render_native(frame.image, twin_settings);
-  const std::vector<kernels::Pixel> image = chip.framebuffer();
-  EXPECT_EQ(std::memcmp(image.data(), twin.image.data(), image.size() * sizeof(kernels::Pixel)), 0)
-      << "image differs from the native twin";
+  expect_equals_native_twin(chip, frame, d.path_state);
   const kernels::RayCounters rays = chip.ray_counters();
-  EXPECT_EQ(std::memcmp(&rays, &twin.counters, sizeof rays), 0) << "ray statistics differ from the native twin";
   EXPECT_EQ(rays.paths, 32u * 32u);
 
   const nlohmann::json r = chip_report(chip, 1.0);

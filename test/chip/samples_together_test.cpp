@@ -30,11 +30,7 @@ TEST_P(SamplesTogether, ManySamplesOfAPixelAreInFlightAndTheImageIsTheTwins) {
   SmallFrame frame(scenes::make_cornell({0.2, 1}), kSize, k.name);
   frame.settings.samples_per_pixel = kSpp;
   frame.inputs.frame = sim::make_frame_params(frame.image.header(), frame.settings);
-  ChipConfig config = small_chip(mode, 2, 8);
-  config.design = {"compact", true, k.pipelines, PathStatePlacement::kCompact};
-  config.stream.size_bytes = 512 * 1024;
-  config.stream.treelets = frame.image.header().treelet_count;
-  config.finalize();
+  const ChipConfig config = small_design_chip(mode, {"compact", true, k.pipelines, PathStatePlacement::kCompact}, frame);
   Chip chip("chip", config, frame.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
@@ -42,14 +38,8 @@ TEST_P(SamplesTogether, ManySamplesOfAPixelAreInFlightAndTheImageIsTheTwins) {
   EXPECT_EQ(chip.work_items(), uint64_t{kPixels} * kSpp);
   EXPECT_EQ(chip.pixels_done(), kPixels);
 
-  sim::RenderSettings twin_settings = frame.settings;
-  twin_settings.path_arithmetic = sim::PathArithmetic::kPacked;
-  const sim::RenderResult twin = sim::render_native(frame.image, twin_settings);
-  const std::vector<kernels::Pixel> image = chip.framebuffer();
-  EXPECT_EQ(std::memcmp(image.data(), twin.image.data(), image.size() * sizeof(kernels::Pixel)), 0)
-      << "image differs from the native twin";
+  expect_equals_native_twin(chip, frame, PathStatePlacement::kCompact);
   const kernels::RayCounters rays = chip.ray_counters();
-  EXPECT_EQ(std::memcmp(&rays, &twin.counters, sizeof rays), 0) << "ray statistics differ from the native twin";
   EXPECT_EQ(rays.paths, uint64_t{kPixels} * kSpp);
 
   const nlohmann::json r = chip_report(chip, 1.0);
