@@ -13,6 +13,10 @@ the same as coverage.csv in the output folder. --sampled NAME compares the sampl
 NAME/ instead of sampled/ (e.g. sampled-batch16k, from intervals-sampled-batch16k.json) and
 writes coverage-NAME.csv. Where the sampled runs give the simulated clock
 (intervals.simulated_frame_cycles), a last table sets it beside the reported frame time.
+Frames are compared only when both runs executed the same kernel image (the sweep's "kernel"
+column, from stats.json's simulation.kernel): a kernel's code layout alone moves frame timing by
+a few percent. A pair with different kernels is left out and listed; a run made before the
+digest was recorded (2026-12-07) is compared, and listed as unchecked.
 Standard library only."""
 import argparse
 import csv
@@ -52,6 +56,21 @@ def interval(row, path):
     return value(row, f"intervals.stats.{path}.half_width")
 
 
+def same_kernel_pairs(lt, sampled):
+    """The frames both sets ran under the same kernel image; those whose kernels differ, with
+    the two kernels; and those where either run has no digest (compared, but unchecked)."""
+    pairs, mismatched, unchecked = [], [], []
+    for key in sorted(set(lt) & set(sampled)):
+        a, b = lt[key].get("kernel", ""), sampled[key].get("kernel", "")
+        if a and b and a != b:
+            mismatched.append((key, (a, b)))
+            continue
+        if not a or not b:
+            unchecked.append(key)
+        pairs.append(key)
+    return pairs, mismatched, unchecked
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "out",
@@ -62,8 +81,13 @@ def main():
     if not lt or not sampled:
         sys.exit(f"interval_coverage: run the specs first (scripts/strata-sweep experiments/specs/intervals-lt.json "
                  f"and intervals-{a.sampled}.json); no results under {a.out}/lt and {a.out}/{a.sampled}")
+    pairs, mismatched, unchecked = same_kernel_pairs(lt, sampled)
+    for key, kernels in mismatched:
+        print(f"left out: {' '.join(map(str, key))}: LT ran {kernels[0]}, sampled ran {kernels[1]} (re-run one of them)")
+    for key in unchecked:
+        print(f"unchecked: {' '.join(map(str, key))}: a run made before kernel digests were recorded")
     rows, inside, total, ratios = [], {}, {}, {}
-    for key in sorted(set(lt) & set(sampled)):
+    for key in pairs:
         ref, est = lt[key], sampled[key]
         for path, label in METRICS:
             r, e, hw = value(ref, path), value(est, path), interval(est, path)
@@ -115,7 +139,7 @@ def main():
                   f"{sum(abs(e) for e in errs) / len(errs):.2f}{unit} |")
     clocks = [(key, value(sampled[key], "intervals.simulated_frame_cycles"), value(sampled[key], "frame.cycles"),
                value(lt[key], "frame.cycles"), interval(sampled[key], "frame.cycles"))
-              for key in sorted(set(lt) & set(sampled))]
+              for key in pairs]
     clocks = [c for c in clocks if c[1] is not None and c[3]]
     if clocks:
         # Runs made while the frame time was the samples' estimate (2026-12-06) report it as

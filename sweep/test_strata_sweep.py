@@ -38,6 +38,7 @@ FAKE_SIM = textwrap.dedent("""\
     sets = [a[i + 1] for i in range(len(a)) if a[i] == "--set"]
     stats = {"frame": {"cycles": 1000 + len(" ".join(sets)), "frames_per_second": 5.0},
              "memory": {"dram": {"bytes": 64 * len(sets)}},
+             "simulation": {"kernel": {"elf": "k.elf", "image_digest": "00ff"}},
              "units": {"frame.cycles": "cycles", "frame.frames_per_second": "1/s", "memory.dram.bytes": "bytes"}}
     json.dump(stats, open(os.path.join(out, "stats.json"), "w"))
 """)
@@ -196,6 +197,7 @@ class LocalTest(Fixture):
         self.assertIn("frame.cycles [cycles]", rows[0])
         self.assertIn("memory.dram.bytes [bytes]", rows[0])
         self.assertEqual({r["status"] for r in rows}, {"done"})
+        self.assertEqual({r["kernel"] for r in rows}, {"k.elf 00ff"})
         for r in rows:
             folder = os.path.join(self.dir, "out", "runs", r["run"])
             with open(os.path.join(folder, "params.json")) as f:

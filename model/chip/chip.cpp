@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 #include "firmware/abi/boot_block.h"
@@ -32,6 +33,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
     : sc_core::sc_module(name), config_(config), stats_("chip", "One simulated frame on the chip.") {
   const iss::ElfImage elf = iss::load_elf(inputs.kernel_elf);
   code_ = build_code(elf);
+  kernel_name_ = std::filesystem::path(inputs.kernel_elf).filename().string();
+  kernel_digest_ = iss::image_digest(elf);
   load(inputs, elf);
 
   dram_ = std::make_unique<memory::Dram>("dram", config_.dram, backing_);

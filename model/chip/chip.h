@@ -73,6 +73,9 @@ class Chip : public sc_core::sc_module {
   std::vector<kernels::RayCounters> ray_counters_per_thread() const;
 
   const ChipConfig& config() const { return config_; }
+  // The kernel that ran: its file name and the digest of its loaded image (iss::image_digest).
+  const std::string& kernel_name() const { return kernel_name_; }
+  const std::string& kernel_digest() const { return kernel_digest_; }
   const GuestLayout& layout() const { return layout_; }
   const std::vector<std::unique_ptr<ThreadMultiprocessor>>& tms() const { return tms_; }
   const std::vector<std::unique_ptr<memory::L1DataCache>>& l1d() const { return l1d_; }
@@ -100,6 +103,7 @@ class Chip : public sc_core::sc_module {
   memory::SparseMemory backing_;
   GlobalRegisters globals_;
   iss::CodeImage code_;
+  std::string kernel_name_, kernel_digest_;
   GuestLayout layout_;
   transport::DataClassMap data_classes_;
   uint32_t pixels_ = 0;

@@ -186,6 +186,8 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
   if (cfg.design.streams) j["design"]["path_state"] = path_state_name(cfg.design.path_state);
   j["simulation"]["timing_mode"] = to_string(cfg.timing.mode);
   j["simulation"]["quantum_cycles"] = cfg.timing.quantum_cycles;
+  // Which program ran: frames are comparable only under the same kernel image.
+  j["simulation"]["kernel"] = {{"elf", chip_.kernel_name()}, {"image_digest", chip_.kernel_digest()}};
   if (interrupted_) j["interrupted"] = true;
   j["units"] = values_.units();
   if (has_intervals()) {

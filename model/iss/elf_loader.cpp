@@ -1,7 +1,8 @@
 #include "model/iss/elf_loader.h"
 
-#include <cstring>
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -140,6 +141,26 @@ ElfImage parse_elf(const std::string& path, const std::vector<uint8_t>& file) {
       }
   read_symbols(r, shoff, shentsize, shnum, image);
   return image;
+}
+
+std::string image_digest(const ElfImage& elf) {
+  uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64 offset basis and prime
+  const auto mix = [&h](uint8_t b) {
+    h ^= b;
+    h *= 0x100000001b3ull;
+  };
+  const auto mix_word = [&mix](uint32_t w) {
+    for (int i = 0; i < 4; ++i) mix(static_cast<uint8_t>(w >> (8 * i)));
+  };
+  for (const ElfSegment& s : elf.segments) {
+    mix_word(s.vaddr);
+    mix_word(s.memsz);
+    mix_word(static_cast<uint32_t>(s.bytes.size()));
+    for (uint8_t b : s.bytes) mix(b);
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
 }
 
 }  // namespace strata::iss

@@ -40,6 +40,12 @@ struct ElfImage {
 };
 
 ElfImage load_elf(const std::string& path);
+
+// A 64-bit FNV-1a digest of what the ELF puts in memory (each segment's address, size and
+// bytes, in file order), as 16 hex digits. It names the program a run executed: two frames are
+// comparable only when their kernels' digests match, since a kernel's code layout alone moves
+// frame timing by a few percent. Symbols and other sections do not count.
+std::string image_digest(const ElfImage& elf);
 ElfImage parse_elf(const std::string& path, const std::vector<uint8_t>& file);  // path for messages
 
 }  // namespace strata::iss

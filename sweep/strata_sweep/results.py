@@ -51,6 +51,10 @@ def collect(runs, root):
         if stats is not None:
             row["simulator wall [s]"] = done.get("wall_seconds")
             row["simulator"] = done.get("simulator_sha256", "")
+            # The kernel image that ran (absent from runs made before 2026-12-07): frames are
+            # comparable only under the same one, as a kernel's code layout moves its timing.
+            kernel = stats.get("simulation", {}).get("kernel") or {}
+            row["kernel"] = f"{kernel['elf']} {kernel['image_digest']}" if "image_digest" in kernel else ""
             row.update(flatten(stats))
         rows.append(row)
     return rows

@@ -137,6 +137,28 @@ TEST(IssElf, ParsesSegmentsEntryAndSymbols) {
   EXPECT_FALSE(image.symbol("missing").has_value());
 }
 
+// The digest names what the program puts in memory: a changed instruction, a moved segment or a
+// longer zero tail changes it; symbols do not.
+TEST(IssElf, ImageDigestFollowsTheLoadedBytesOnly) {
+  const ElfSpec base = tohost_program();
+  const std::string digest = image_digest(parse_elf("prog.elf", build_elf(base)));
+  EXPECT_EQ(digest.size(), 16u);
+  EXPECT_EQ(image_digest(parse_elf("other-name.elf", build_elf(base))), digest);
+  ElfSpec renamed = base;
+  renamed.symbols = {{"_start", 0x10000}, {"tohost", 0x11000}, {"extra", 0x10004}};
+  EXPECT_EQ(image_digest(parse_elf("prog.elf", build_elf(renamed))), digest);
+  ElfSpec changed = base;
+  changed.segments[0].words[1] = enc::addi(11, 0, (8 << 1) | 1);
+  EXPECT_NE(image_digest(parse_elf("prog.elf", build_elf(changed))), digest);
+  ElfSpec moved = base;
+  moved.segments[1].vaddr = 0x12000;
+  moved.symbols = {{"_start", 0x10000}, {"tohost", 0x12000}};
+  EXPECT_NE(image_digest(parse_elf("prog.elf", build_elf(moved))), digest);
+  ElfSpec longer = base;
+  longer.segments[1].extra_bss += 4;
+  EXPECT_NE(image_digest(parse_elf("prog.elf", build_elf(longer))), digest);
+}
+
 TEST(IssElf, RejectsUnsuitableFilesNamingThem) {
   const std::vector<uint8_t> good = build_elf(tohost_program());
   auto with = [&](auto change) {
