@@ -13,6 +13,7 @@
 #include "model/chip/chip.h"
 #include "model/chip/chip_report.h"
 #include "sim/commands.h"
+#include "sim/frame_setup.h"
 #include "sim/image_output.h"
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
@@ -60,13 +61,6 @@ std::set<std::string> detail_axes(const std::vector<std::string>& asked) {
   return axes;
 }
 
-// The kernel each design runs (firmware/kernels/<name>_main.cpp).
-std::string kernel_for(const chip::ChipConfig& c) {
-  if (!c.design.streams) return "baseline";
-  const std::string base = c.design.pipelines ? "streams_pipelines" : "streams";
-  return c.design.path_state == chip::PathStatePlacement::kCompact ? base + "_compact" : base;
-}
-
 void run_frame(RunOptions o) {
   const std::set<std::string> detail = detail_axes(o.stats_detail);
   parse_resolution(o.resolution, &o.settings.width, &o.settings.height);
@@ -79,23 +73,11 @@ void run_frame(RunOptions o) {
       std::fprintf(stderr, "warning: %s set, but timing.mode is %s: sampled timing's options do nothing in this mode\n",
                    fields.c_str(), to_string(config.timing.mode));
   }
-  // Treelets are exactly one L1 data cache (ARCHITECTURE.md, "Treelets").
-  o.source.params.treelet_bytes = config.l1d.size_bytes;
+  o.source.params = scene_image_params_for(config, o.source.params);
   const LoadedScene loaded = load_scene_and_image(o.source);
-  // The stream memory keeps one buffer head per treelet of this scene.
-  config.stream.treelets = loaded.image.header().treelet_count;
-  config.finalize();
-  if (o.firmware.empty()) o.firmware = default_kernel_elf(kernel_for(config));
-  if (!std::filesystem::exists(o.firmware))
-    throw std::runtime_error(o.firmware + ": kernel firmware not found (built by the RISC-V toolchain; the " +
-                             kernel_for(config) + " kernel may not exist yet)");
-
-  chip::FrameInputs inputs;
-  inputs.kernel_elf = o.firmware;
-  inputs.scene_image = loaded.image.bytes();
-  inputs.scene_image_bytes = loaded.image.size_bytes();
-  inputs.treelet_bytes = loaded.image.header().treelet_bytes;
-  inputs.frame = make_frame_params(loaded.image.header(), o.settings);
+  PreparedFrame prepared = prepare_frame(config, loaded.image, o.settings, o.firmware);
+  config = prepared.config;
+  chip::FrameInputs& inputs = prepared.inputs;
   // Before the simulation, not after it: an unwritable --out or --vcd fails in a second.
   require_writable_dir(o.out_dir, "--out");
   if (!o.vcd.empty()) require_writable_file(o.vcd, "--vcd");

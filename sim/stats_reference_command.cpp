@@ -15,7 +15,7 @@
 #include "scenes/procedural/procedural.h"
 #include "scenes/scene_image.h"
 #include "sim/commands.h"
-#include "sim/iss_render.h"
+#include "sim/frame_setup.h"
 #include "sim/native_render.h"
 #include "tlm/data_class.h"
 
@@ -57,20 +57,11 @@ void write_reference() {
   // The banked DRAM adds its group (memory.dram.banked) to the channel model's statistics.
   config.dram.model = memory::DramModel::kBanked;
   const scenes::Scene scene = scenes::make_cornell({0.05, 1});
-  scenes::SceneImageParams params;
-  params.treelet_bytes = config.l1d.size_bytes;
-  const scenes::SceneImage image = scenes::build_scene_image(scene, params, nullptr);
-  config.stream.treelets = image.header().treelet_count;
-  config.finalize();
+  const scenes::SceneImage image = scenes::build_scene_image(scene, scene_image_params_for(config), nullptr);
   RenderSettings settings;
   settings.width = settings.height = 2;
-  chip::FrameInputs inputs;
-  inputs.kernel_elf = default_kernel_elf("streams_pipelines");
-  inputs.scene_image = image.bytes();
-  inputs.scene_image_bytes = image.size_bytes();
-  inputs.treelet_bytes = image.header().treelet_bytes;
-  inputs.frame = make_frame_params(image.header(), settings);
-  const chip::Chip chip("reference", config, inputs);
+  const PreparedFrame frame = prepare_frame(config, image, settings);
+  const chip::Chip chip("reference", frame.config, frame.inputs);
   const chip::FrameReport report(chip, 0.0);
 
   std::string classes;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "firmware/abi/boot_block.h"
+#include "model/chip/design.h"
 #include "model/memory/stream_sram.h"
 
 namespace strata::chip {
@@ -35,6 +36,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   code_ = build_code(elf);
   kernel_name_ = std::filesystem::path(inputs.kernel_elf).filename().string();
   kernel_digest_ = iss::image_digest(elf);
+  done_register_ = checked_design(config_.design).done_register;
   load(inputs, elf);
 
   dram_ = std::make_unique<memory::Dram>("dram", config_.dram, backing_);
@@ -181,8 +183,7 @@ transport::Cycle Chip::cycles() const {
 
 uint32_t Chip::pixels_done() const {
   if (samples_together_) return uint32_t(std::min<uint64_t>(globals_.values[kernels::kPixelsDoneRegister] / spp_, pixels_));
-  const uint32_t reg = config_.design.streams ? kernels::kPixelsDoneRegister : kernels::kPixelCounterRegister;
-  return std::min(globals_.values[reg], pixels_);
+  return std::min(globals_.values[done_register_], pixels_);
 }
 
 uint64_t Chip::instructions() const {

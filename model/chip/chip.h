@@ -104,6 +104,7 @@ class Chip : public sc_core::sc_module {
   GlobalRegisters globals_;
   iss::CodeImage code_;
   std::string kernel_name_, kernel_digest_;
+  uint32_t done_register_ = 0;  // where the design's kernel counts finished work (design.h)
   GuestLayout layout_;
   transport::DataClassMap data_classes_;
   uint32_t pixels_ = 0;

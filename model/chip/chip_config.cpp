@@ -4,6 +4,7 @@
 
 #include "firmware/abi/frame_abi.h"
 #include "json_input/strict_json.h"
+#include "model/chip/design.h"
 
 #include <fstream>
 #include <string>
@@ -160,7 +161,11 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
 }
 
 void ChipConfig::bind(ConfigBinder& b) {
-  b.bind("design.name", &design.name);
+  // The name selects the design (model/chip/design.h) and sets its mechanism flags; a flag set
+  // after it that contradicts the design is refused by finalize().
+  std::vector<std::string> names;
+  for (const Design& d : designs()) names.push_back(d.name);
+  b.bind_choice("design.name", &design.name, names, [this] { design = design_config(design.name, design.path_state); });
   b.bind("design.streams", &design.streams);
   b.bind("design.pipelines", &design.pipelines);
   b.bind_enum("design.path_state", &design.path_state, {"compact", "on-chip", "dram"});
@@ -269,6 +274,7 @@ void ChipConfig::bind(ConfigBinder& b) {
 }
 
 void ChipConfig::finalize() {
+  (void)checked_design(design);
   require(tms >= 1, "tms: the chip needs at least 1 TM, got " + std::to_string(tms));
   require(tms <= 1024, "tms: at most 1024 TMs are supported, got " + std::to_string(tms));
   require(tps_per_tm >= 1 && tps_per_tm <= 64, "tps_per_tm: must be 1..64, got " + std::to_string(tps_per_tm));

@@ -48,7 +48,7 @@ std::vector<std::string> sample_target_list(const std::string& list);
 const char* path_state_name(PathStatePlacement p);
 
 struct DesignConfig {
-  std::string name = "strata-pipelines";
+  std::string name = "strata-streams-pipelines";  // selects the design (model/chip/design.h)
   bool streams = true;    // ray stream memory + treelet scheduling (else: TRaX-style L2 only)
   bool pipelines = true;  // fused box/triangle pipelines (else: general-purpose XUs only)
   PathStatePlacement path_state = PathStatePlacement::kCompact;  // streaming designs only

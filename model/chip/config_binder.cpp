@@ -1,5 +1,7 @@
 #include "model/chip/config_binder.h"
 
+#include <algorithm>
+
 #include "json_input/strict_json.h"
 
 #include <cmath>
@@ -72,6 +74,18 @@ void ConfigBinder::bind(const std::string& path, std::string* field) {
              [field](const nlohmann::json& j) {
                if (!j.is_string()) return false;
                *field = j.get<std::string>();
+               return true;
+             },
+             [field] { return nlohmann::json(*field); }});
+}
+void ConfigBinder::bind_choice(const std::string& path, std::string* field, std::vector<std::string> names,
+                               std::function<void()> chosen) {
+  add(path, {"one of " + join(names),
+             [field, names, chosen](const nlohmann::json& j) {
+               if (!j.is_string() || std::find(names.begin(), names.end(), j.get<std::string>()) == names.end())
+                 return false;
+               *field = j.get<std::string>();
+               chosen();
                return true;
              },
              [field] { return nlohmann::json(*field); }});

@@ -52,6 +52,11 @@ class ConfigBinder {
     add(path, std::move(f));
   }
 
+  // A string from a fixed list of names; after a valid one is read, `chosen` runs (it may fill
+  // in the fields the name implies: design.name sets the design's mechanism flags).
+  void bind_choice(const std::string& path, std::string* field, std::vector<std::string> names,
+                   std::function<void()> chosen);
+
   // Applies a JSON document (a config file); `source` names it in errors.
   void apply(const nlohmann::json& doc, const std::string& source);
   // Applies "dotted.path=value"; the value is read as JSON, or as a string if it is not JSON.

@@ -1,4 +1,5 @@
-// Builds a small chip running the baseline kernel on a small scene, for the chip tests.
+// Small chips and small frames for the chip tests, set up as `strata-sim run` sets up a frame
+// (sim/frame_setup.h): the design's kernel, the config completed from the scene image.
 #pragma once
 
 #include <cstring>
@@ -13,8 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "model/chip/chip.h"
+#include "model/chip/design.h"
 #include "scenes/procedural/procedural.h"
 #include "scenes/scene_image.h"
+#include "sim/frame_setup.h"
 #include "sim/iss_render.h"
 #include "sim/native_render.h"
 
@@ -28,7 +31,7 @@ namespace strata::chip::test {
 
 inline ChipConfig small_chip(transport::TimingMode mode, uint32_t tms = 2, uint32_t tps = 8) {
   ChipConfig c;
-  c.design = {"trax-baseline", false, false};
+  c.design = design_config("trax-baseline");
   c.tms = tms;
   c.tps_per_tm = tps;
   c.timing.mode = mode;
@@ -37,29 +40,27 @@ inline ChipConfig small_chip(transport::TimingMode mode, uint32_t tms = 2, uint3
   return c;
 }
 
+// A small frame: a scene's image (treelets of the default L1 data cache) and its settings.
 struct SmallFrame {
   scenes::SceneImage image;
   sim::RenderSettings settings;
-  FrameInputs inputs;
-  SmallFrame(const scenes::Scene& scene, uint32_t size, const std::string& kernel = "baseline") {
-    scenes::SceneImageParams p;
-    image = scenes::build_scene_image(scene, p, nullptr);
+  SmallFrame(const scenes::Scene& scene, uint32_t size) {
+    image = scenes::build_scene_image(scene, sim::scene_image_params_for(ChipConfig{}), nullptr);
     settings.width = settings.height = size;
-    inputs.kernel_elf = sim::default_kernel_elf(kernel);
-    inputs.scene_image = image.bytes();
-    inputs.scene_image_bytes = image.size_bytes();
-    inputs.treelet_bytes = image.header().treelet_bytes;
-    inputs.frame = sim::make_frame_params(image.header(), settings);
+  }
+  // This frame on `config`'s chip: the config completed from the image, and the design's
+  // kernel unless `kernel_elf` names another.
+  sim::PreparedFrame on(const ChipConfig& config, const std::string& kernel_elf = "") const {
+    return sim::prepare_frame(config, image, settings, kernel_elf);
   }
 };
 
-// A small chip (2 TMs of 8 TPs) of `design`, with a 512 KB stream memory holding `frame`'s
-// treelets (unused by a design without streams).
-inline ChipConfig small_design_chip(transport::TimingMode mode, const DesignConfig& design, const SmallFrame& frame) {
+// A small chip (2 TMs of 8 TPs) of `design`, with a 512 KB stream memory (unused by a design
+// without streams).
+inline ChipConfig small_design_chip(transport::TimingMode mode, const DesignConfig& design) {
   ChipConfig config = small_chip(mode, 2, 8);
   config.design = design;
   config.stream.size_bytes = 512 * 1024;
-  config.stream.treelets = frame.image.header().treelet_count;
   config.finalize();
   return config;
 }

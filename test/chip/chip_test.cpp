@@ -11,8 +11,10 @@ namespace {
 TEST(Chip, BaselineFirmwareOnTwoTmsMatchesTheTwinInBothTimingModes) {
   REQUIRE_KERNEL("baseline");
   const SmallFrame frame(scenes::make_cornell({0.2, 1}), 12);
-  Chip lt("lt", small_chip(transport::TimingMode::kLooselyTimed), frame.inputs);
-  Chip precise("precise", small_chip(transport::TimingMode::kPrecise), frame.inputs);
+  const sim::PreparedFrame lt_frame = frame.on(small_chip(transport::TimingMode::kLooselyTimed));
+  const sim::PreparedFrame precise_frame = frame.on(small_chip(transport::TimingMode::kPrecise));
+  Chip lt("lt", lt_frame.config, lt_frame.inputs);
+  Chip precise("precise", precise_frame.config, precise_frame.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(lt.finished()) << lt.error();
   ASSERT_TRUE(precise.finished()) << precise.error();
@@ -68,7 +70,8 @@ TEST(Chip, AFirmwareFaultIsReportedWithTheTmTpAndPc) {
   SmallFrame frame(scenes::make_cornell({0.2, 1}), 4);
   ChipConfig config = small_chip(transport::TimingMode::kLooselyTimed, 1, 2);
   config.tp_stack_bytes = 256;  // far too small for the kernel's frames
-  Chip chip("chip", config, frame.inputs);
+  const sim::PreparedFrame f = frame.on(config);
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   EXPECT_FALSE(chip.finished());
   EXPECT_NE(chip.error().find("TM 0, TP"), std::string::npos) << chip.error();
@@ -77,8 +80,9 @@ TEST(Chip, AFirmwareFaultIsReportedWithTheTmTpAndPc) {
 
 TEST(Chip, McycleCountsTheTpsCyclesNotItsInstructions) {
   SmallFrame frame(scenes::make_cornell({0.2, 1}), 4);
-  frame.inputs.kernel_elf = std::string(STRATA_ISS_FIRMWARE_DIR) + "/mcycle.elf";
-  Chip chip("chip", small_chip(transport::TimingMode::kPrecise, 1, 1), frame.inputs);
+  const sim::PreparedFrame f =
+      frame.on(small_chip(transport::TimingMode::kPrecise, 1, 1), std::string(STRATA_ISS_FIRMWARE_DIR) + "/mcycle.elf");
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   const kernels::RayCounters c = chip.ray_counters_per_thread()[0];

@@ -235,6 +235,10 @@ TEST(ConfigRanges, EachRangeIsWhatTheConfigAccepts) {
       expect_accepted(r, "true");
       expect_accepted(r, "false");
       expect_refused(r, "1");
+    } else if (r.accepted == "the design's") {  // design.streams, design.pipelines: design.name decides
+      expect_accepted(r, r.default_value);
+      expect_refused(r, r.default_value == "true" ? "false" : "true");
+      expect_refused(r, "1");
     } else if (r.accepted == "any string") {
       expect_accepted(r, "\"x\"");
       expect_refused(r, "1");

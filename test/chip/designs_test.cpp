@@ -13,29 +13,33 @@
 namespace strata::chip::test {
 namespace {
 
-struct Design {
-  const char* name;
-  bool streams, pipelines;
-  const char* kernel;
+// Each design with each path state, and the kernel it must run (design.h's kernel_of).
+struct Case {
+  const char* label;
+  const char* design;
   PathStatePlacement path_state;
+  const char* kernel;
 };
-const Design kDesigns[] = {{"trax", false, false, "baseline", PathStatePlacement::kDram},
-                           {"streams_compact", true, false, "streams_compact", PathStatePlacement::kCompact},
-                           {"streams", true, false, "streams", PathStatePlacement::kOnChip},
-                           {"streams_pathdram", true, false, "streams", PathStatePlacement::kDram},
-                           {"pipelines_compact", true, true, "streams_pipelines_compact", PathStatePlacement::kCompact},
-                           {"pipelines", true, true, "streams_pipelines", PathStatePlacement::kOnChip},
-                           {"pipelines_pathdram", true, true, "streams_pipelines", PathStatePlacement::kDram}};
+const Case kCases[] = {{"trax", "trax-baseline", PathStatePlacement::kDram, "baseline"},
+                       {"streams_compact", "strata-streams", PathStatePlacement::kCompact, "streams_compact"},
+                       {"streams", "strata-streams", PathStatePlacement::kOnChip, "streams"},
+                       {"streams_pathdram", "strata-streams", PathStatePlacement::kDram, "streams"},
+                       {"pipelines_compact", "strata-streams-pipelines", PathStatePlacement::kCompact,
+                        "streams_pipelines_compact"},
+                       {"pipelines", "strata-streams-pipelines", PathStatePlacement::kOnChip, "streams_pipelines"},
+                       {"pipelines_pathdram", "strata-streams-pipelines", PathStatePlacement::kDram,
+                        "streams_pipelines"}};
 
 using Param = std::tuple<int, transport::TimingMode, const char*>;
 
 class Designs : public ::testing::TestWithParam<Param> {};
 
 TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
-  const Design& d = kDesigns[std::get<0>(GetParam())];
+  const Case& c = kCases[std::get<0>(GetParam())];
+  const DesignConfig d = design_config(c.design, c.path_state);
   const transport::TimingMode mode = std::get<1>(GetParam());
   const std::string scene_name = std::get<2>(GetParam());
-  REQUIRE_KERNEL(d.kernel);
+  REQUIRE_KERNEL(c.kernel);
   scenes::Scene scene;
   if (scene_name == "sibenik") {
     if (!std::filesystem::exists(STRATA_SHARED_DIR "/scenes/sibenik/sibenik.obj"))
@@ -44,9 +48,10 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
   } else {
     scene = scenes::make_cornell({0.2, 1});
   }
-  SmallFrame frame(scene, 32, d.kernel);
-  const ChipConfig config = small_design_chip(mode, {d.name, d.streams, d.pipelines, d.path_state}, frame);
-  Chip chip("chip", config, frame.inputs);
+  SmallFrame frame(scene, 32);
+  const sim::PreparedFrame f = frame.on(small_design_chip(mode, d));
+  EXPECT_EQ(f.kernel, c.kernel);
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
 
@@ -102,7 +107,7 @@ TEST_P(Designs, FrameMatchesTheNativeTwinAndConservesRays) {
 }
 
 std::string param_name(const ::testing::TestParamInfo<Param>& info) {
-  return std::string(kDesigns[std::get<0>(info.param)].name) + "_" +
+  return std::string(kCases[std::get<0>(info.param)].label) + "_" +
          (std::get<1>(info.param) == transport::TimingMode::kPrecise ? "precise" : "lt") + "_" +
          std::get<2>(info.param);
 }

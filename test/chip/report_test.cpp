@@ -36,7 +36,8 @@ std::string line_starting(const std::string& text, const std::string& start) {
 TEST(FrameReport, SummaryPrintsTheSnapshotsNumbersWithTheirMode) {
   REQUIRE_KERNEL("baseline");
   const SmallFrame frame(scenes::make_cornell({0.2, 1}), 8);
-  Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed, 1, 4), frame.inputs);
+  const sim::PreparedFrame f = frame.on(small_chip(transport::TimingMode::kLooselyTimed, 1, 4));
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   const FrameReport report(chip, 2.0);
@@ -81,7 +82,8 @@ TEST(FrameReport, SentinelsWarnWhenACalendarIsTooShort) {
   config.timing.quantum_cycles = 32;
   config.l1d.calendar_horizon_cycles = 64;  // far less than a miss takes: fills overflow
   config.finalize();
-  Chip chip("chip", config, frame.inputs);
+  const sim::PreparedFrame f = frame.on(config);
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   const FrameReport report(chip, 1.0);
@@ -93,7 +95,8 @@ TEST(FrameReport, SentinelsWarnWhenACalendarIsTooShort) {
 TEST(FrameReport, AnInterruptedRunHasNoFrameRate) {
   REQUIRE_KERNEL("baseline");
   const SmallFrame frame(scenes::make_cornell({0.2, 1}), 8);
-  Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed, 1, 4), frame.inputs);
+  const sim::PreparedFrame f = frame.on(small_chip(transport::TimingMode::kLooselyTimed, 1, 4));
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start(sc_core::sc_time(2000, sc_core::SC_NS));  // stops early, as Ctrl-C would
   ASSERT_FALSE(chip.finished());
   const FrameReport report(chip, 1.0, true);

@@ -13,25 +13,20 @@
 namespace strata::chip::test {
 namespace {
 
-struct Kernel {
-  const char* name;
-  bool pipelines;
-};
-const Kernel kKernels[] = {{"streams_compact", false}, {"streams_pipelines_compact", true}};
+const char* const kDesigns[] = {"strata-streams", "strata-streams-pipelines"};  // compact path state
 
 using Param = std::tuple<int, transport::TimingMode>;
 class SamplesTogether : public ::testing::TestWithParam<Param> {};
 
 TEST_P(SamplesTogether, ManySamplesOfAPixelAreInFlightAndTheImageIsTheTwins) {
-  const Kernel& k = kKernels[std::get<0>(GetParam())];
+  const DesignConfig design = design_config(kDesigns[std::get<0>(GetParam())], PathStatePlacement::kCompact);
   const transport::TimingMode mode = std::get<1>(GetParam());
-  REQUIRE_KERNEL(k.name);
+  REQUIRE_KERNEL(kernel_of(design));
   constexpr uint32_t kSize = 8, kSpp = 8, kPixels = kSize * kSize;
-  SmallFrame frame(scenes::make_cornell({0.2, 1}), kSize, k.name);
+  SmallFrame frame(scenes::make_cornell({0.2, 1}), kSize);
   frame.settings.samples_per_pixel = kSpp;
-  frame.inputs.frame = sim::make_frame_params(frame.image.header(), frame.settings);
-  const ChipConfig config = small_design_chip(mode, {"compact", true, k.pipelines, PathStatePlacement::kCompact}, frame);
-  Chip chip("chip", config, frame.inputs);
+  const sim::PreparedFrame f = frame.on(small_design_chip(mode, design));
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   ASSERT_TRUE(chip.samples_together());
@@ -48,7 +43,7 @@ TEST_P(SamplesTogether, ManySamplesOfAPixelAreInFlightAndTheImageIsTheTwins) {
   // most the 64 pixels' rays (one ray per path in flight).
   const auto& flight = r["treelets"]["rays_in_flight"];
   EXPECT_GT(flight["peak"].get<uint64_t>(), 4u * kPixels);
-  EXPECT_LE(flight["peak"].get<uint64_t>(), uint64_t{kPixels} * kSpp + config.threads());
+  EXPECT_LE(flight["peak"].get<uint64_t>(), uint64_t{kPixels} * kSpp + f.config.threads());
   if (mode == transport::TimingMode::kSampled) return;  // the traffic below is estimated there
   expect_by_data_sums_to_totals(r);
   // Each sample's slot is written once and read once by the resolve, each pixel written once:
@@ -60,7 +55,7 @@ TEST_P(SamplesTogether, ManySamplesOfAPixelAreInFlightAndTheImageIsTheTwins) {
 std::string param_name(const ::testing::TestParamInfo<Param>& info) {
   const transport::TimingMode mode = std::get<1>(info.param);
   const char* m = mode == transport::TimingMode::kPrecise ? "precise" : mode == transport::TimingMode::kSampled ? "sampled" : "lt";
-  return std::string(kKernels[std::get<0>(info.param)].name) + "_" + m;
+  return kernel_of(design_config(kDesigns[std::get<0>(info.param)])) + "_" + m;
 }
 
 INSTANTIATE_TEST_SUITE_P(Chip, SamplesTogether,

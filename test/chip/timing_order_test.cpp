@@ -18,11 +18,10 @@ namespace {
 
 // A streaming design on `tms` TMs of 8 TPs, for the tests that need several TMs to share
 // treelet buffers.
-ChipConfig streams_chip(transport::TimingMode mode, const SmallFrame& frame, uint32_t tms) {
+ChipConfig streams_chip(transport::TimingMode mode, uint32_t tms) {
   ChipConfig config = small_chip(mode, tms, 8);
-  config.design = {"strata-streams-pipelines", true, true, PathStatePlacement::kOnChip};
+  config.design = design_config("strata-streams-pipelines", PathStatePlacement::kOnChip);
   config.stream.size_bytes = 512 * 1024;
-  config.stream.treelets = frame.image.header().treelet_count;
   config.finalize();
   return config;
 }
@@ -38,8 +37,10 @@ TEST(TimingOrder, ATpSlackAboveTheQuantumKeepsLtWithinOnePercentOfPrecise) {
   lt_config.timing.quantum_cycles = 1;
   lt_config.finalize();
   ASSERT_EQ(lt_config.timing.tp_slack_cycles, 32u);
-  Chip lt("lt", lt_config, frame.inputs);
-  Chip precise("precise", small_chip(transport::TimingMode::kPrecise), frame.inputs);
+  const sim::PreparedFrame lt_frame = frame.on(lt_config);
+  Chip lt("lt", lt_frame.config, lt_frame.inputs);
+  const sim::PreparedFrame precise_frame = frame.on(small_chip(transport::TimingMode::kPrecise));
+  Chip precise("precise", precise_frame.config, precise_frame.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(lt.finished()) << lt.error();
   ASSERT_TRUE(precise.finished()) << precise.error();
@@ -52,8 +53,9 @@ TEST(TimingOrder, PreciseModeSendsEveryTpRequestInTimeOrder) {
   // Sent at the cycle the TP was stepped, it reached the L1 ahead of the other TPs'
   // lookups of the cycles in between, and the L1 had to correct it (reordered > 0).
   REQUIRE_KERNEL("streams_pipelines");
-  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32, "streams_pipelines");
-  Chip chip("precise", streams_chip(transport::TimingMode::kPrecise, frame, 4), frame.inputs);
+  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32);
+  const sim::PreparedFrame f = frame.on(streams_chip(transport::TimingMode::kPrecise, 4));
+  Chip chip("precise", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   const nlohmann::json r = chip_report(chip, 1.0);
@@ -69,14 +71,17 @@ TEST(TimingOrder, StreamOperationsInTimeOrderKeepLtL1MissesWithPrecise) {
   // buffer before the other TMs asked for it: they spread over treelets instead of sharing
   // it, switched treelets less, and LT missed less in the L1 than precise.
   REQUIRE_KERNEL("streams_pipelines");
-  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32, "streams_pipelines");
-  const ChipConfig synced = streams_chip(transport::TimingMode::kLooselyTimed, frame, 4);
+  const SmallFrame frame(scenes::make_cornell({1.0, 1}), 32);
+  const ChipConfig synced = streams_chip(transport::TimingMode::kLooselyTimed, 4);
   ASSERT_TRUE(synced.timing.sync_shared_ops);
   ChipConfig arrival = synced;
   arrival.timing.sync_shared_ops = false;
-  Chip lt("lt", synced, frame.inputs);
-  Chip lt_arrival("lt_arrival", arrival, frame.inputs);
-  Chip precise("precise", streams_chip(transport::TimingMode::kPrecise, frame, 4), frame.inputs);
+  const sim::PreparedFrame lt_frame = frame.on(synced);
+  Chip lt("lt", lt_frame.config, lt_frame.inputs);
+  const sim::PreparedFrame lt_arrival_frame = frame.on(arrival);
+  Chip lt_arrival("lt_arrival", lt_arrival_frame.config, lt_arrival_frame.inputs);
+  const sim::PreparedFrame precise_frame = frame.on(streams_chip(transport::TimingMode::kPrecise, 4));
+  Chip precise("precise", precise_frame.config, precise_frame.inputs);
   sc_core::sc_start();
   for (const Chip* c : {&lt, &lt_arrival, &precise}) ASSERT_TRUE(c->finished()) << c->error();
   const nlohmann::json a = chip_report(lt, 1.0), o = chip_report(lt_arrival, 1.0), b = chip_report(precise, 1.0);

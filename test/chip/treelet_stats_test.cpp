@@ -13,12 +13,11 @@ namespace {
 
 using Param = std::tuple<bool, transport::TimingMode>;  // pipelines, mode
 
-ChipConfig frame_chip(const SmallFrame& frame, bool streams, bool pipelines, transport::TimingMode mode) {
+ChipConfig frame_chip(bool streams, bool pipelines, transport::TimingMode mode) {
   ChipConfig config = small_chip(mode, 2, 8);
-  config.design = {streams ? (pipelines ? "pipelines" : "streams") : "trax", streams, pipelines,
-                   streams ? PathStatePlacement::kOnChip : PathStatePlacement::kDram};
+  config.design = design_config(streams ? (pipelines ? "strata-streams-pipelines" : "strata-streams") : "trax-baseline",
+                                streams ? PathStatePlacement::kOnChip : PathStatePlacement::kDram);
   config.stream.size_bytes = 512 * 1024;
-  config.stream.treelets = frame.image.header().treelet_count;
   if (mode == transport::TimingMode::kSampled) {  // windows small enough for a 32x32 frame
     config.timing.quantum_cycles = 500;
     config.timing.sample_period_cycles = 6000;
@@ -40,11 +39,11 @@ class TreeletStats : public ::testing::TestWithParam<Param> {};
 TEST_P(TreeletStats, SessionsAccountForEveryRayAndLine) {
   const bool pipelines = std::get<0>(GetParam());
   const transport::TimingMode mode = std::get<1>(GetParam());
-  const char* kernel = pipelines ? "streams_pipelines" : "streams";
-  REQUIRE_KERNEL(kernel);
-  SmallFrame frame(scenes::make_cornell({0.2, 1}), 32, kernel);
-  const ChipConfig config = frame_chip(frame, true, pipelines, mode);
-  Chip chip("chip", config, frame.inputs);
+  const ChipConfig config = frame_chip(true, pipelines, mode);
+  REQUIRE_KERNEL(kernel_of(config.design));
+  SmallFrame frame(scenes::make_cornell({0.2, 1}), 32);
+  const sim::PreparedFrame prepared = frame.on(config);
+  Chip chip("chip", prepared.config, prepared.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
 
@@ -121,9 +120,9 @@ INSTANTIATE_TEST_SUITE_P(Chip, TreeletStats,
 
 TEST(TreeletStatsTrax, HasNoSessionsAndNoRaysInFlight) {
   REQUIRE_KERNEL("baseline");
-  SmallFrame frame(scenes::make_cornell({0.2, 1}), 16, "baseline");
-  const ChipConfig config = frame_chip(frame, false, false, transport::TimingMode::kLooselyTimed);
-  Chip chip("chip", config, frame.inputs);
+  SmallFrame frame(scenes::make_cornell({0.2, 1}), 16);
+  const sim::PreparedFrame f = frame.on(frame_chip(false, false, transport::TimingMode::kLooselyTimed));
+  Chip chip("chip", f.config, f.inputs);
   sc_core::sc_start();
   ASSERT_TRUE(chip.finished()) << chip.error();
   const FrameReport report(chip, 1.0);

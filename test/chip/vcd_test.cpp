@@ -59,7 +59,8 @@ Vcd parse_vcd(const std::string& path) {
 TEST(ChipVcd, TraceHoldsTheTmCacheAndDramSignalsWithValueChanges) {
   REQUIRE_KERNEL("baseline");
   const SmallFrame frame(scenes::make_cornell({0.2, 1}), 8);
-  Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed), frame.inputs);
+  const sim::PreparedFrame f = frame.on(small_chip(transport::TimingMode::kLooselyTimed));
+  Chip chip("chip", f.config, f.inputs);
   const std::string base = (std::filesystem::temp_directory_path() / ("strata-vcd-" + std::to_string(::getpid()))).string();
   sc_core::sc_trace_file* file = sc_core::sc_create_vcd_trace_file(base.c_str());
   chip.trace(file, memory::TraceWindow(500));
@@ -86,7 +87,8 @@ TEST(ChipVcd, TraceHoldsTheTmCacheAndDramSignalsWithValueChanges) {
 TEST(ChipVcd, TimeWindowKeepsTheTraceToTheRequestedCycles) {
   REQUIRE_KERNEL("baseline");
   const SmallFrame frame(scenes::make_cornell({0.2, 1}), 8);
-  Chip chip("chip", small_chip(transport::TimingMode::kLooselyTimed), frame.inputs);
+  const sim::PreparedFrame f = frame.on(small_chip(transport::TimingMode::kLooselyTimed));
+  Chip chip("chip", f.config, f.inputs);
   const std::string base = (std::filesystem::temp_directory_path() / ("strata-vcdw-" + std::to_string(::getpid()))).string();
   sc_core::sc_trace_file* file = sc_core::sc_create_vcd_trace_file(base.c_str());
   file->set_time_unit(1, sc_core::SC_NS);

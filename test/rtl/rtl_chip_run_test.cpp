@@ -203,7 +203,7 @@ TEST(RtlChipRunConfig, AMissingTmOrADesignWithoutPipelinesIsAnErrorNamingTheFiel
   const SimRun no_tm = simulate(dir, "no_tm", " --set tm.pipeline_impl=rtl --set tm.pipeline_impl_tms=0,2");
   EXPECT_FALSE(no_tm.ok);
   EXPECT_NE(no_tm.log.find("tm.pipeline_impl_tms: TM 2 does not exist"), std::string::npos) << no_tm.log;
-  const SimRun no_pipelines = simulate(dir, "no_pipelines", " --set tm.pipeline_impl=rtl --set design.pipelines=false");
+  const SimRun no_pipelines = simulate(dir, "no_pipelines", " --set tm.pipeline_impl=rtl --set design.name=strata-streams");
   EXPECT_FALSE(no_pipelines.ok);
   EXPECT_NE(no_pipelines.log.find("tm.pipeline_impl: rtl needs a design with the fused pipelines"), std::string::npos)
       << no_pipelines.log;
