@@ -21,6 +21,7 @@
 
 #include <stdint.h>
 
+#include "firmware/common/float_bits.h"
 #include "firmware/common/vec3.h"
 
 namespace strata::kernels {
@@ -31,18 +32,6 @@ struct PackedColor {
 
 constexpr uint32_t kPackedMantissaBits = 13;
 constexpr uint32_t kPackedMantissaMax = (1u << kPackedMantissaBits) - 1;
-
-inline uint32_t float_bits(float f) {
-  uint32_t u;
-  __builtin_memcpy(&u, &f, sizeof u);
-  return u;
-}
-
-inline float bits_float(uint32_t u) {
-  float f;
-  __builtin_memcpy(&f, &u, sizeof f);
-  return f;
-}
 
 namespace packed_detail {
 

@@ -84,8 +84,8 @@ struct TimingConfig {
   // Sampled: the frame's two ends, where its rates change fastest, are strata of their own,
   // timed in full and estimated apart from the sampled middle (window_sampler.h,
   // docs/sampled-timing.md "Head and drain strata"). The head: the first sample_head_periods
-  // configured periods (0: none), cold caches and the first camera rays, whose windows moved
-  // STRaTA's DRAM estimate by 9.5% at 512x512. The drain: from the first window after every
+  // configured periods (0: none), cold caches and the first camera rays, whose windows skewed
+  // STRaTA's DRAM estimate when they were sampled like the middle. The drain: from the first window after every
   // pixel has been handed out and the pixels left to finish have fallen to sample_drain_share
   // of the frame's (0: none), where the rays in flight run out.
   uint32_t sample_head_periods = 4;
@@ -97,8 +97,8 @@ struct TimingConfig {
   // quanta (it never runs into a detailed window). A TP advances by about this much per batch,
   // so longer batches pay the per-batch costs (switching TPs, reloading the TP's state into
   // the host's caches) less often, but reorder the stream operations over a longer stretch.
-  // It was a fixed 4 until measured: 16 is as accurate against LT on 18 frames and 14-19%
-  // faster (docs/sampled-timing.md, "Fast-forward batch length").
+  // 16 is as accurate against LT as shorter batches, and faster (docs/sampled-timing.md,
+  // "Fast-forward batch length", has the measurement).
   uint32_t fast_forward_batch_quanta = 16;
   // Sampled: a fast-forwarded TP's stream and global-register operations wait, as in LT with
   // sync_shared_ops, until global time reaches the cycle the measured rates date them at, so
@@ -118,12 +118,12 @@ struct TimingConfig {
   double sample_target_error = 0.0;
   // Comma-separated statistics the target holds for: counts or formulas over counts. By default
   // the figures a design comparison reads: frame time, DRAM bytes and L2 accesses (DRAM varies
-  // far more between windows than cycles do: a target on cycles alone left it at +-30-47%).
+  // far more between windows than cycles do, so a target on cycles alone leaves it wide).
   std::string sample_target_stats = "frame.cycles,memory.dram.bytes,memory.l2.accesses";
   // Sampled: how the batches' replicates become an interval (model/stats/interval_method.h).
   // "successive" (differences of neighbouring batches) follows the frame's trends, as windows
   // spread evenly over it do; "jackknife" treats the batches as exchangeable and counts a trend
-  // as variance: STRaTA's DRAM intervals stayed at +-29-47% whatever the windows
+  // as variance, so STRaTA's DRAM intervals stay wide whatever the windows
   // (docs/sampled-timing.md, "Trends and the interval").
   stats::IntervalMethod sample_interval = stats::IntervalMethod::kSuccessiveDifferences;
 };

@@ -1,25 +1,17 @@
 #include "model/chip/guest_layout.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "firmware/abi/frame_abi.h"
+#include "model/iss/hex_text.h"
 
 namespace strata::chip {
 
 using transport::DataClass;
 
 uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
-
-namespace {
-std::string hex(uint64_t v) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "0x%llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-}  // namespace
 
 uint32_t path_slots_for(uint32_t stream_capacity_rays, uint32_t pixels) {
   return std::min(stream_capacity_rays, std::max(pixels, 1u));
@@ -49,7 +41,7 @@ GuestLayout plan_frame_layout(uint64_t base, const FrameFootprint& f) {
   if (g.end > 0xFFFFFFFFull)
     throw std::runtime_error(
         "guest memory: the scene image and frame need " + std::to_string(g.end - base) + " bytes above " +
-        hex(base) + ", beyond the 32-bit guest address space" +
+        iss::hex_text(base) + ", beyond the 32-bit guest address space" +
         (f.sample_slots ? " (of which " + std::to_string(f.sample_slots * sizeof(kernels::Pixel)) +
                               " bytes are the per-sample slots, one per pixel and sample: fewer samples per pixel "
                               "or a smaller frame)"

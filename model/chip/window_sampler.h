@@ -61,8 +61,8 @@ class WindowSampler : public sc_core::sc_module {
   // The longest: the configured period, or, once the target is met with room, a kMinWindows-th
   // of the whole frame (`frame_cycles`, projected), so no stretch longer than that (the frame's
   // drain, a change of phase) goes unsampled. Of the whole frame, not of its rest: a cap on the
-  // rest shrinks with every window and packs the frame's end with windows (the 1024x1024
-  // Sibenik frame measured 128 windows where its variance asked for 43).
+  // rest shrinks with every window and packs the frame's end with windows, three times as many
+  // as the variance asks for on a full frame (docs/sampled-timing.md).
   uint64_t max_period(double frame_cycles) const;
   static constexpr double kMinWindows = 32;
   static constexpr double kPlanningMargin = 0.85;  // plans for 85% of the target (retarget)

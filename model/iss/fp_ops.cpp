@@ -25,17 +25,10 @@ inline bool is_inf(uint32_t a) { return (a & ~kSign) == kExpMask; }
 inline bool is_zero(uint32_t a) { return (a & ~kSign) == 0; }
 inline bool sign_of(uint32_t a) { return (a & kSign) != 0; }
 
-inline double widen(uint32_t a) {
-  float f;
-  std::memcpy(&f, &a, sizeof f);
-  return static_cast<double>(f);
-}
+inline double widen(uint32_t a) { return static_cast<double>(bits_float(a)); }
 
 inline uint32_t narrow_exact(double d) {  // only for values exact in binary32 (0, inf)
-  const float f = static_cast<float>(d);
-  uint32_t a;
-  std::memcpy(&a, &f, sizeof a);
-  return a;
+  return float_bits(static_cast<float>(d));
 }
 
 inline uint64_t bits_of(double d) {

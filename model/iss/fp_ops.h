@@ -5,7 +5,8 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+
+#include "firmware/common/float_bits.h"
 
 namespace strata::iss::fp {
 
@@ -50,16 +51,6 @@ constexpr uint32_t sgnjx(uint32_t a, uint32_t b) { return a ^ (b & kSign); }
 // nearest even without flush-to-zero, which the simulator never changes) and an exact
 // binary64 check gives the inexact flag. Everything else goes to the soft implementation.
 namespace detail {
-inline float to_float(uint32_t a) {
-  float f;
-  std::memcpy(&f, &a, sizeof f);
-  return f;
-}
-inline uint32_t to_bits(float f) {
-  uint32_t a;
-  std::memcpy(&a, &f, sizeof a);
-  return a;
-}
 // Finite and above the smallest normal: a result of exactly 2^-126 may come from a tiny
 // exact value, and then it underflows, so that case takes the soft path.
 inline bool normal(uint32_t a) {
@@ -71,13 +62,13 @@ inline bool nan(uint32_t a) { return (a & ~kSign) > 0x7F800000u; }
 
 inline uint32_t add(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) {
   if (rm == kRne) {
-    const float fa = detail::to_float(a), fb = detail::to_float(b);
+    const float fa = bits_float(a), fb = bits_float(b);
     const float r = fa + fb;
-    if (detail::normal(detail::to_bits(r))) {
+    if (detail::normal(float_bits(r))) {
       const double x = fa, y = fb, s = x + y, yy = s - x;
       const double err = (x - (s - yy)) + (y - yy);  // TwoSum: x + y == s + err exactly
       if (s != static_cast<double>(r) || err != 0.0) flags |= kNX;
-      return detail::to_bits(r);
+      return float_bits(r);
     }
   }
   return soft::add(a, b, rm, flags);
@@ -87,11 +78,11 @@ inline uint32_t sub(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) { retu
 
 inline uint32_t mul(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) {
   if (rm == kRne) {
-    const float fa = detail::to_float(a), fb = detail::to_float(b);
+    const float fa = bits_float(a), fb = bits_float(b);
     const float r = fa * fb;
-    if (detail::normal(detail::to_bits(r))) {
+    if (detail::normal(float_bits(r))) {
       if (static_cast<double>(fa) * static_cast<double>(fb) != static_cast<double>(r)) flags |= kNX;
-      return detail::to_bits(r);
+      return float_bits(r);
     }
   }
   return soft::mul(a, b, rm, flags);
@@ -99,11 +90,11 @@ inline uint32_t mul(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) {
 
 inline uint32_t div(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) {
   if (rm == kRne) {
-    const float fa = detail::to_float(a), fb = detail::to_float(b);
+    const float fa = bits_float(a), fb = bits_float(b);
     const float r = fa / fb;
-    if (detail::normal(detail::to_bits(r))) {
+    if (detail::normal(float_bits(r))) {
       if (static_cast<double>(r) * static_cast<double>(fb) != static_cast<double>(fa)) flags |= kNX;
-      return detail::to_bits(r);
+      return float_bits(r);
     }
   }
   return soft::div(a, b, rm, flags);
@@ -111,10 +102,10 @@ inline uint32_t div(uint32_t a, uint32_t b, unsigned rm, uint32_t& flags) {
 
 inline uint32_t sqrt(uint32_t a, unsigned rm, uint32_t& flags) {
   if (rm == kRne && a - 1u < 0x7F7FFFFFu) {  // positive, finite, nonzero: the root is normal
-    const float fa = detail::to_float(a);
+    const float fa = bits_float(a);
     const float r = std::sqrt(fa);
     if (static_cast<double>(r) * static_cast<double>(r) != static_cast<double>(fa)) flags |= kNX;
-    return detail::to_bits(r);
+    return float_bits(r);
   }
   return soft::sqrt(a, rm, flags);
 }
@@ -125,34 +116,34 @@ inline uint32_t fma(uint32_t a, uint32_t b, uint32_t c, unsigned rm, uint32_t& f
 
 inline uint32_t min(uint32_t a, uint32_t b, uint32_t& flags) {
   if (!detail::nan(a) && !detail::nan(b) && ((a | b) & ~kSign) != 0)
-    return detail::to_float(a) < detail::to_float(b) ? a : b;
+    return bits_float(a) < bits_float(b) ? a : b;
   return soft::min(a, b, flags);
 }
 
 inline uint32_t max(uint32_t a, uint32_t b, uint32_t& flags) {
   if (!detail::nan(a) && !detail::nan(b) && ((a | b) & ~kSign) != 0)
-    return detail::to_float(a) > detail::to_float(b) ? a : b;
+    return bits_float(a) > bits_float(b) ? a : b;
   return soft::max(a, b, flags);
 }
 
 inline uint32_t eq(uint32_t a, uint32_t b, uint32_t& flags) {
-  if (!detail::nan(a) && !detail::nan(b)) return detail::to_float(a) == detail::to_float(b);
+  if (!detail::nan(a) && !detail::nan(b)) return bits_float(a) == bits_float(b);
   return soft::eq(a, b, flags);
 }
 
 inline uint32_t lt(uint32_t a, uint32_t b, uint32_t& flags) {
-  if (!detail::nan(a) && !detail::nan(b)) return detail::to_float(a) < detail::to_float(b);
+  if (!detail::nan(a) && !detail::nan(b)) return bits_float(a) < bits_float(b);
   return soft::lt(a, b, flags);
 }
 
 inline uint32_t le(uint32_t a, uint32_t b, uint32_t& flags) {
-  if (!detail::nan(a) && !detail::nan(b)) return detail::to_float(a) <= detail::to_float(b);
+  if (!detail::nan(a) && !detail::nan(b)) return bits_float(a) <= bits_float(b);
   return soft::le(a, b, flags);
 }
 
 inline uint32_t to_int32(uint32_t a, unsigned rm, uint32_t& flags) {
   if (rm == kRtz && (a & 0x7F800000u) < 0x4F000000u) {  // |a| < 2^31: C's truncating cast
-    const float fa = detail::to_float(a);
+    const float fa = bits_float(a);
     const int32_t i = static_cast<int32_t>(fa);
     if (static_cast<float>(i) != fa) flags |= kNX;
     return static_cast<uint32_t>(i);
@@ -167,7 +158,7 @@ inline uint32_t from_int32(uint32_t v, unsigned rm, uint32_t& flags) {
     const int32_t i = static_cast<int32_t>(v);
     const float r = static_cast<float>(i);
     if (static_cast<double>(r) != static_cast<double>(i)) flags |= kNX;
-    return detail::to_bits(r);
+    return float_bits(r);
   }
   return soft::from_int32(v, rm, flags);
 }

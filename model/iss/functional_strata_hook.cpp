@@ -2,14 +2,10 @@
 
 #include <cstring>
 
+#include "firmware/common/float_bits.h"
+
 namespace strata::iss {
 namespace {
-
-uint32_t float_bits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, 4);
-  return b;
-}
 
 HookResult ok(uint32_t d0 = 0, uint32_t d1 = 0, uint32_t d2 = 0) {
   HookResult r;

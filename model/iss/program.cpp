@@ -2,14 +2,10 @@
 
 #include <algorithm>
 
+#include "model/iss/hex_text.h"
+
 namespace strata::iss {
 namespace {
-
-std::string hex(uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08x", v);
-  return buf;
-}
 
 constexpr uint64_t kDataAlignment = 1u << 20;
 
@@ -63,11 +59,11 @@ Program make_program(ElfImage elf, uint32_t stack_bytes, uint32_t data_bytes) {
   FlatMemory memory = build_memory(elf, stack_bytes, data_bytes, &stack_top, &data_base);
   CodeImage code = build_code(elf, memory);
   if (!code.contains(elf.entry) || (elf.entry & 3u))
-    throw ElfError(elf.path + ": entry point " + hex(elf.entry) + " is not an aligned address in an executable segment");
+    throw ElfError(elf.path + ": entry point " + hex_text(elf.entry) + " is not an aligned address in an executable segment");
   const uint32_t entry = elf.entry;
   std::optional<uint32_t> tohost = elf.symbol("tohost");
   if (tohost && !memory.contains(*tohost, 4))
-    throw ElfError(elf.path + ": symbol tohost " + hex(*tohost) + " lies outside the loaded segments");
+    throw ElfError(elf.path + ": symbol tohost " + hex_text(*tohost) + " lies outside the loaded segments");
   return Program{std::move(elf), std::move(memory), std::move(code), entry, stack_top, data_base, tohost};
 }
 

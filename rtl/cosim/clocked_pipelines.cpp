@@ -11,14 +11,14 @@
 #include "verilated.h"
 #include "verilated_vcd_c.h"
 
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 
 namespace strata::rtl {
 namespace {
 
-float lane_float(uint64_t v, int lane) { return from_bits(static_cast<uint32_t>(v >> (32 * lane))); }
+float lane_float(uint64_t v, int lane) { return bits_float(static_cast<uint32_t>(v >> (32 * lane))); }
 bool lane_bit(uint32_t v, int lane) { return (v >> lane & 1u) != 0; }
-uint64_t on_lane(float f, int lane) { return static_cast<uint64_t>(bits(f)) << (32 * lane); }
+uint64_t on_lane(float f, int lane) { return static_cast<uint64_t>(float_bits(f)) << (32 * lane); }
 
 // The longest latency is 33 cycles; a pipeline silent for this long never answers.
 constexpr uint64_t kMaxCyclesPerOperation = 1000;
@@ -138,20 +138,20 @@ uint64_t ClockedPipelines::clock(Model& model, uint64_t& cycle) {
 
 BoxResult ClockedPipelines::box(const BoxOperands& in, OpTiming* timing) {
   Vbox_pipeline_cc& m = *m_->box;
-  m.bmin_x = bits(in.bmin[0]);
-  m.bmin_y = bits(in.bmin[1]);
-  m.bmin_z = bits(in.bmin[2]);
-  m.bmax_x = bits(in.bmax[0]);
-  m.bmax_y = bits(in.bmax[1]);
-  m.bmax_z = bits(in.bmax[2]);
-  m.origin_x = bits(in.ray.origin.x);
-  m.origin_y = bits(in.ray.origin.y);
-  m.origin_z = bits(in.ray.origin.z);
-  m.inv_dir_x = bits(in.ray.inv_dir.x);
-  m.inv_dir_y = bits(in.ray.inv_dir.y);
-  m.inv_dir_z = bits(in.ray.inv_dir.z);
-  m.tmin = bits(in.ray.tmin);
-  m.tmax = bits(in.ray.tmax);
+  m.bmin_x = float_bits(in.bmin[0]);
+  m.bmin_y = float_bits(in.bmin[1]);
+  m.bmin_z = float_bits(in.bmin[2]);
+  m.bmax_x = float_bits(in.bmax[0]);
+  m.bmax_y = float_bits(in.bmax[1]);
+  m.bmax_z = float_bits(in.bmax[2]);
+  m.origin_x = float_bits(in.ray.origin.x);
+  m.origin_y = float_bits(in.ray.origin.y);
+  m.origin_z = float_bits(in.ray.origin.z);
+  m.inv_dir_x = float_bits(in.ray.inv_dir.x);
+  m.inv_dir_y = float_bits(in.ray.inv_dir.y);
+  m.inv_dir_z = float_bits(in.ray.inv_dir.z);
+  m.tmin = float_bits(in.ray.tmin);
+  m.tmax = float_bits(in.ray.tmax);
   m.in_valid = 1;
   m.eval();  // in_ready follows the pins combinationally
   BoxResult result;
@@ -160,7 +160,7 @@ BoxResult ClockedPipelines::box(const BoxOperands& in, OpTiming* timing) {
     // What the coming edge sees: the pins as they are now.
     const bool accept = !accepted && m.in_valid && m.in_ready;
     const bool leave = accepted && m.out_valid && m.out_ready;
-    if (leave) result = {m.out_hit != 0, m.out_overlap != 0, from_bits(m.out_t_entry)};
+    if (leave) result = {m.out_hit != 0, m.out_overlap != 0, bits_float(m.out_t_entry)};
     const uint64_t edge = clock(m, box_cycle_);
     if (leave) {
       timing->done_cycle = edge;

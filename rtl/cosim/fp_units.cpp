@@ -11,7 +11,7 @@
 #include "Vfp32_minmax.h"
 #include "Vfp32_mul.h"
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 #include "verilated.h"
 
 namespace strata::rtl {
@@ -76,7 +76,7 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 2, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const uint32_t host = bits(from_bits(pairs[i].first) * from_bits(pairs[i].second));
+            const uint32_t host = float_bits(bits_float(pairs[i].first) * bits_float(pairs[i].second));
             if (!fp_results_agree(m.y, host)) record(r, pairs[i], "rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();
@@ -90,8 +90,8 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 2, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const float a = from_bits(pairs[i].first), b = from_bits(pairs[i].second);
-            const uint32_t host = bits(sub ? a - b : a + b);
+            const float a = bits_float(pairs[i].first), b = bits_float(pairs[i].second);
+            const uint32_t host = float_bits(sub ? a - b : a + b);
             if (!fp_results_agree(m.y, host)) record(r, pairs[i], "rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();
@@ -102,7 +102,7 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
       run_pipelined(
           m, n, 1, [&](size_t i) { m.a = pairs[i].first; m.b = pairs[i].second; },
           [&](size_t i) {
-            const float a = from_bits(pairs[i].first), b = from_bits(pairs[i].second);
+            const float a = bits_float(pairs[i].first), b = bits_float(pairs[i].second);
             const bool lt = a < b, le = a <= b, eq = a == b;
             if (bool(m.lt) != lt || bool(m.le) != le || bool(m.eq) != eq)
               record(r, pairs[i],
@@ -124,9 +124,9 @@ FpCompareResult compare_fp_unit(FpOp op, const std::vector<OperandPair>& pairs) 
             m.max = (i % 2) == 0;
           },
           [&](size_t i) {
-            const float a = from_bits(pairs[i / 2].first), b = from_bits(pairs[i / 2].second);
+            const float a = bits_float(pairs[i / 2].first), b = bits_float(pairs[i / 2].second);
             const bool is_max = (i % 2) == 0;
-            const uint32_t host = bits(is_max ? max_ignore_nan(a, b) : min_ignore_nan(a, b));
+            const uint32_t host = float_bits(is_max ? max_ignore_nan(a, b) : min_ignore_nan(a, b));
             if (m.y != host) record(r, pairs[i / 2], std::string(is_max ? "max" : "min") + " rtl " + hex(m.y) + " host " + hex(host));
           });
       m.final();

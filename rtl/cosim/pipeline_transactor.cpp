@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 
 namespace strata::rtl {
 namespace {
@@ -97,7 +97,7 @@ void PipelineTransactor::drive_box() {
     if (box_in_flight_.empty()) SC_REPORT_FATAL("strata/rtl/transactor", "box pipeline produced an unrequested result");
     Request* r = box_in_flight_.front();
     box_in_flight_.pop_front();
-    r->op->box_result = {box_out_hit_.read(), box_out_overlap_.read(), from_bits(box_out_t_entry_.read())};
+    r->op->box_result = {box_out_hit_.read(), box_out_overlap_.read(), bits_float(box_out_t_entry_.read())};
     r->op->done_cycle = cycle_;
     r->op->latency_cycles = static_cast<uint32_t>(cycle_ - r->op->accept_cycle);
     ++box_done_;
@@ -117,7 +117,7 @@ void PipelineTransactor::drive_box() {
     const float v[kBoxOperands] = {b.bmin[0],        b.bmin[1],        b.bmin[2],        b.bmax[0],       b.bmax[1],
                                    b.bmax[2],        b.ray.origin.x,   b.ray.origin.y,   b.ray.origin.z,  b.ray.inv_dir.x,
                                    b.ray.inv_dir.y,  b.ray.inv_dir.z,  b.ray.tmin,       b.ray.tmax};
-    for (int i = 0; i < kBoxOperands; ++i) box_operand_[i].write(bits(v[i]));
+    for (int i = 0; i < kBoxOperands; ++i) box_operand_[i].write(float_bits(v[i]));
   }
   box_in_valid_.write(box_presented_ != nullptr);
   box_out_ready_.write(true);
@@ -136,9 +136,9 @@ void PipelineTransactor::drive_triangle() {
       TriangleResult& res = r->op->triangle_result;
       res.hit = lane_bit(tri_out_hit_.read(), l);
       res.exact = lane_bit(tri_out_exact_.read(), l);
-      res.partial = {from_bits(lane_word(tri_out_e0_.read(), l)), from_bits(lane_word(tri_out_e1_.read(), l)),
-                     from_bits(lane_word(tri_out_e2_.read(), l)), from_bits(lane_word(tri_out_t_num_.read(), l)),
-                     from_bits(lane_word(tri_out_t_den_.read(), l))};
+      res.partial = {bits_float(lane_word(tri_out_e0_.read(), l)), bits_float(lane_word(tri_out_e1_.read(), l)),
+                     bits_float(lane_word(tri_out_e2_.read(), l)), bits_float(lane_word(tri_out_t_num_.read(), l)),
+                     bits_float(lane_word(tri_out_t_den_.read(), l))};
       r->op->done_cycle = cycle_;
       r->op->latency_cycles = static_cast<uint32_t>(cycle_ - r->op->accept_cycle);
       ++triangle_done_;
@@ -181,7 +181,7 @@ void PipelineTransactor::drive_triangle() {
                                         t.origin.y, t.origin.z, t.dir.x,    t.dir.y, t.dir.z};
     const uint64_t mask = 0xFFFFFFFFull << (32 * pick);
     for (int i = 0; i < kTriangleOperands; ++i)
-      words[i] = (words[i] & ~mask) | static_cast<uint64_t>(bits(v[i])) << (32 * pick);
+      words[i] = (words[i] & ~mask) | static_cast<uint64_t>(float_bits(v[i])) << (32 * pick);
   }
   uint32_t valid = 0;
   for (int l = 0; l < kTriangleLanes; ++l)

@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -18,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "firmware/common/float_bits.h"
 #include "firmware/common/intersect.h"
 #include "firmware/common/traverse.h"
 #include "scenes/procedural/random.h"
@@ -35,18 +35,6 @@ using scenes::Pcg32;
 // production arithmetic is all-float and has no such double -> float -> double chain.
 inline float round_f(double x) {
   volatile float f = static_cast<float>(x);
-  return f;
-}
-
-inline uint32_t float_bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-
-inline float bits_float(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
   return f;
 }
 

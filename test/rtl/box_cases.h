@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 
 namespace strata::rtl_test {
 
@@ -33,7 +33,7 @@ inline std::vector<BoxOp> box_cases(uint64_t random_count, uint64_t seed) {
   std::mt19937_64 rng(seed);
   auto unit = [&] { return std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng); };
   auto pick = [&](std::initializer_list<float> v) { return *(v.begin() + rng() % v.size()); };
-  auto raw = [&] { return rtl::from_bits(static_cast<uint32_t>(rng())); };
+  auto raw = [&] { return bits_float(static_cast<uint32_t>(rng())); };
   std::vector<BoxOp> out;
   for (uint64_t n = 0; n < random_count; ++n) {
     BoxOp op{};

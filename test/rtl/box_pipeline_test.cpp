@@ -16,7 +16,7 @@
 
 #include "Vbox_pipeline.h"
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 #include "test/rtl/box_cases.h"
 #include "test/rtl/pipeline_config.h"
 
@@ -26,7 +26,6 @@ namespace {
 using rtl_test::box_cases;
 using rtl_test::BoxOp;
 
-using rtl::bits;
 
 struct BoxResult {
   bool hit, overlap;
@@ -92,7 +91,7 @@ SC_MODULE(BoxBench) {
       const float v[14] = {op.bmin[0], op.bmin[1], op.bmin[2], op.bmax[0], op.bmax[1],
                            op.bmax[2], op.ray.origin.x, op.ray.origin.y, op.ray.origin.z, op.ray.inv_dir.x,
                            op.ray.inv_dir.y, op.ray.inv_dir.z, op.ray.tmin, op.ray.tmax};
-      for (int i = 0; i < 14; ++i) operand[i].write(bits(v[i]));
+      for (int i = 0; i < 14; ++i) operand[i].write(float_bits(v[i]));
     }
     out_ready.write(std::uniform_real_distribution<double>(0, 1)(rng) >= stall_probability);
     if (results.size() == ops.size()) sc_core::sc_stop();
@@ -121,10 +120,10 @@ TEST(RtlBoxPipeline, MatchesIntersectBoxBitForBit) {
     const BoxResult& r = bench.results[i];
     hits += hit;
     nan_entries += t_valid != t_valid;
-    if (r.hit != hit || r.overlap != overlap || r.t_entry != bits(t_valid)) {
+    if (r.hit != hit || r.overlap != overlap || r.t_entry != float_bits(t_valid)) {
       if (++mismatches <= 10)
         ADD_FAILURE() << "op " << i << ": rtl hit " << r.hit << " overlap " << r.overlap << " t_entry 0x" << std::hex
-                      << r.t_entry << ", C++ hit " << hit << " overlap " << overlap << " t_entry 0x" << bits(t_valid);
+                      << r.t_entry << ", C++ hit " << hit << " overlap " << overlap << " t_entry 0x" << float_bits(t_valid);
     }
   }
   EXPECT_EQ(mismatches, 0u);
@@ -180,7 +179,7 @@ TEST(RtlBoxPipeline, StallsUnderBackPressureWithoutLosingResults) {
     const bool hit = intersect_box(bench.ops[i].bmin, bench.ops[i].bmax, bench.ops[i].ray, &t);
     intersect_box_valid_ray(bench.ops[i].bmin, bench.ops[i].bmax, bench.ops[i].ray, &t);
     ASSERT_EQ(bench.results[i].hit, hit) << "op " << i;
-    ASSERT_EQ(bench.results[i].t_entry, bits(t)) << "op " << i;
+    ASSERT_EQ(bench.results[i].t_entry, float_bits(t)) << "op " << i;
   }
   // With the output stalled most of the time, acceptance cannot run at one per cycle.
   EXPECT_GT(bench.accepted_at.back() - bench.accepted_at.front(), 2 * bench.ops.size());

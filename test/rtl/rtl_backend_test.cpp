@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 #include "model/iss/pipeline_reference.h"
 #include "rtl/cosim/rtl_fused_backend.h"
 #include "rtl/cosim/zero_time_transactor.h"
@@ -29,11 +29,10 @@ namespace {
 using rtl::FusedOpExtension;
 using rtl::FusedOpKind;
 
-using rtl::bits;
 
 bool same_partial(const TrianglePartial& a, const TrianglePartial& b) {
-  return bits(a.e0) == bits(b.e0) && bits(a.e1) == bits(b.e1) && bits(a.e2) == bits(b.e2) &&
-         bits(a.t_num) == bits(b.t_num) && bits(a.t_den) == bits(b.t_den);
+  return float_bits(a.e0) == float_bits(b.e0) && float_bits(a.e1) == float_bits(b.e1) && float_bits(a.e2) == float_bits(b.e2) &&
+         float_bits(a.t_num) == float_bits(b.t_num) && float_bits(a.t_den) == float_bits(b.t_den);
 }
 
 // Runs `body` in a thread of its own, as the chip's TMs call the RTL, and fails if it moved
@@ -91,7 +90,7 @@ TEST(RtlZeroTimeTransactor, BoxOperationsMatchIntersectBoxWithTheConfiguredLaten
       const bool overlap = intersect_box_valid_ray(ops[i].bmin, ops[i].bmax, ops[i].ray, &t_valid);
       const bool hit = intersect_box(ops[i].bmin, ops[i].bmax, ops[i].ray, &t_full);
       hits += hit;
-      if ((r.box_result.hit != hit || r.box_result.overlap != overlap || bits(r.box_result.t_entry) != bits(t_valid)) &&
+      if ((r.box_result.hit != hit || r.box_result.overlap != overlap || float_bits(r.box_result.t_entry) != float_bits(t_valid)) &&
           ++mismatches <= 10)
         ADD_FAILURE() << "box op " << i << " differs";
       wrong_latency += r.latency_cycles != config.latency;
@@ -207,7 +206,7 @@ TEST(RtlFusedBackend, AnswersAsTheCppPipelineModelAndCountsTheOps) {
       }
       const strata_pipe_ray ray = pipe_ray(op.ray.origin, {0, 0, 0}, op.ray.inv_dir, op.ray.tmin, op.ray.tmax);
       const iss::BoxTestResult want = iss::box_test(ray, box), got = backend.box_test(ray, box);
-      box_diff += got.hit != want.hit || bits(got.t_entry) != bits(want.t_entry);
+      box_diff += got.hit != want.hit || float_bits(got.t_entry) != float_bits(want.t_entry);
     }
     // A previous partial no test produces, so a miss that failed to keep it would show.
     const TrianglePartial previous = {-7.0f, -7.0f, -7.0f, 1234.5f, -0.25f};

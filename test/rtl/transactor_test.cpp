@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 #include "rtl/cosim/pipeline_transactor.h"
 #include "test/rtl/box_cases.h"
 #include "test/rtl/pipeline_config.h"
@@ -29,7 +29,6 @@ namespace {
 using rtl::FusedOpExtension;
 using rtl::FusedOpKind;
 
-using rtl::bits;
 
 const sc_core::sc_time kPeriod(1, sc_core::SC_NS);
 
@@ -80,7 +79,7 @@ bool box_matches(const rtl_test::BoxOp& op, const FusedOpExtension& r) {
   float t_valid = 0.0f, t_full = 0.0f;
   const bool overlap = intersect_box_valid_ray(op.bmin, op.bmax, op.ray, &t_valid);
   const bool hit = intersect_box(op.bmin, op.bmax, op.ray, &t_full);
-  return r.box_result.hit == hit && r.box_result.overlap == overlap && bits(r.box_result.t_entry) == bits(t_valid);
+  return r.box_result.hit == hit && r.box_result.overlap == overlap && float_bits(r.box_result.t_entry) == float_bits(t_valid);
 }
 
 bool triangle_matches(const rtl_test::TriOp& op, const FusedOpExtension& r, bool* hit_out) {
@@ -90,8 +89,8 @@ bool triangle_matches(const rtl_test::TriOp& op, const FusedOpExtension& r, bool
   if (r.triangle_result.hit != hit) return false;
   if (!hit) return true;  // intersect.h leaves the partial unspecified on a miss
   const TrianglePartial& q = r.triangle_result.partial;
-  return bits(q.e0) == bits(p.e0) && bits(q.e1) == bits(p.e1) && bits(q.e2) == bits(p.e2) &&
-         bits(q.t_num) == bits(p.t_num) && bits(q.t_den) == bits(p.t_den);
+  return float_bits(q.e0) == float_bits(p.e0) && float_bits(q.e1) == float_bits(p.e1) && float_bits(q.e2) == float_bits(p.e2) &&
+         float_bits(q.t_num) == float_bits(p.t_num) && float_bits(q.t_den) == float_bits(p.t_den);
 }
 
 void run(uint64_t max_cycles) { sc_core::sc_start(kPeriod * static_cast<double>(max_cycles)); }

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 
 namespace strata::rtl_test {
 
@@ -34,7 +34,7 @@ inline std::vector<TriOp> triangle_cases(uint64_t count, uint64_t seed) {
   auto unit = [&] { return std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng); };
   auto grid = [&] { return static_cast<float>(static_cast<int>(rng() % 9) - 4); };
   auto pick = [&](std::initializer_list<float> v) { return *(v.begin() + rng() % v.size()); };
-  auto raw = [&] { return rtl::from_bits(static_cast<uint32_t>(rng())); };
+  auto raw = [&] { return bits_float(static_cast<uint32_t>(rng())); };
   auto lerp = [](Vec3f a, Vec3f b, float t) { return a + (b - a) * t; };
   std::vector<TriOp> out;
   for (uint64_t n = 0; n < count; ++n) {

@@ -15,7 +15,7 @@
 
 #include "Vtriangle_pipeline.h"
 #include "firmware/common/intersect.h"
-#include "rtl/cosim/float_bits.h"
+#include "firmware/common/float_bits.h"
 #include "test/rtl/pipeline_config.h"
 #include "test/rtl/triangle_cases.h"
 
@@ -25,7 +25,6 @@ namespace {
 using rtl_test::triangle_cases;
 using rtl_test::TriOp;
 
-using rtl::bits;
 
 struct TriResult {
   bool hit, exact;
@@ -106,7 +105,7 @@ SC_MODULE(TriBench) {
         const TriOp& op = ops[l][next[l]];
         const float v[kOperands] = {op.v0.x, op.v0.y, op.v0.z, op.v1.x, op.v1.y, op.v1.z, op.v2.x, op.v2.y,
                                     op.v2.z, op.origin.x, op.origin.y, op.origin.z, op.dir.x, op.dir.y, op.dir.z};
-        for (int i = 0; i < kOperands; ++i) words[i] |= static_cast<uint64_t>(bits(v[i])) << (32 * l);
+        for (int i = 0; i < kOperands; ++i) words[i] |= static_cast<uint64_t>(float_bits(v[i])) << (32 * l);
       }
       if (std::uniform_real_distribution<double>(0, 1)(rng) >= stall_probability) ready |= 1u << l;
     }
@@ -141,13 +140,13 @@ Comparison compare_all(const TriBench& bench) {
       c.exact_nonzero_hits += hit && r.exact && p.e0 != 0.0f && p.e1 != 0.0f && p.e2 != 0.0f;
       bool same = r.hit == hit;
       if (same && hit)
-        same = r.e0 == bits(p.e0) && r.e1 == bits(p.e1) && r.e2 == bits(p.e2) && r.t_num == bits(p.t_num) &&
-               r.t_den == bits(p.t_den);
+        same = r.e0 == float_bits(p.e0) && r.e1 == float_bits(p.e1) && r.e2 == float_bits(p.e2) && r.t_num == float_bits(p.t_num) &&
+               r.t_den == float_bits(p.t_den);
       if (!same && ++c.mismatches <= 10)
         ADD_FAILURE() << "lane " << l << " op " << i << ": rtl hit " << r.hit << " e 0x" << std::hex << r.e0 << " 0x"
                       << r.e1 << " 0x" << r.e2 << " t 0x" << r.t_num << "/0x" << r.t_den << "; C++ hit " << hit
-                      << " e 0x" << bits(p.e0) << " 0x" << bits(p.e1) << " 0x" << bits(p.e2) << " t 0x"
-                      << bits(p.t_num) << "/0x" << bits(p.t_den);
+                      << " e 0x" << float_bits(p.e0) << " 0x" << float_bits(p.e1) << " 0x" << float_bits(p.e2) << " t 0x"
+                      << float_bits(p.t_num) << "/0x" << float_bits(p.t_den);
     }
   }
   return c;
