@@ -2,43 +2,55 @@
 
 namespace strata::transport {
 
-namespace {
-sc_core::sc_time quantum_of(const InitiatorConfig& c) {
-  const Clock clock;
-  return clock.duration(c.mode == TimingMode::kPrecise ? 1 : (c.quantum_cycles == 0 ? 1 : c.quantum_cycles));
-}
-}  // namespace
-
 MemoryInitiator::MemoryInitiator(sc_core::sc_module_name name, const InitiatorConfig& config)
-    : sc_core::sc_module(name), config_(config), keeper_(quantum_of(config)), pool_(2) {}
+    : sc_core::sc_module(name),
+      config_(config),
+      port_(Clock(), config.mode, config.quantum_cycles, config.tm_id,
+            [](Cycle target) { sc_core::wait(Clock().delay_until(target)); }) {}
+
+Cycle MemoryInitiator::now() {
+  port_.observe();
+  return port_.global_cycle() + lead_;
+}
+
+void MemoryInitiator::sync() {
+  const Cycle t = now();
+  port_.sync_to(t, MemoryPort::kNoLimit, true);
+  lead_ = t - port_.global_cycle();
+}
+
+void MemoryInitiator::keep_within_quantum() {
+  if (config_.mode != TimingMode::kPrecise && lead_ >= port_.quantum_cycles()) sync();
+}
 
 AccessResult MemoryInitiator::access(AccessClass access, uint64_t addr, void* data, uint32_t bytes,
                                      uint32_t treelet) {
-  if (config_.mode == TimingMode::kPrecise) keeper_.sync();
-
-  PooledPayload gp(pool_);
-  prepare_access(gp, access, addr, data, bytes, config_.initiator_id, config_.tm_id, treelet);
-  const MemoryExtension& ext = gp.ext();
-
-  sc_core::sc_time delay = keeper_.local_time();
+  if (config_.mode == TimingMode::kPrecise) sync();
+  PortAccess a;
+  a.access = access;
+  a.addr = addr;
+  a.data = data;
+  a.bytes = bytes;
+  a.at = now();
+  a.thread = config_.initiator_id;
+  a.treelet = treelet;
   AccessResult r;
-  r.issued = clock_.request_cycle(delay);
-  socket->b_transport(*gp, delay);
-  r.completed = clock_.request_cycle(delay);
-  r.response = gp->get_response_status();
+  r.issued = a.at;
+  const bool ok = port_.access(socket, a, &r.completed);
+  r.response = port_.response();
+  const MemoryExtension& ext = port_.answer();
   r.stream_status = ext.stream_status;
   r.result = ext.result;
   r.served_by = ext.served_by;
-
   // Blocking access: this thread's time moves to the completion.
-  keeper_.set(delay);
-  if (config_.mode != TimingMode::kPrecise && keeper_.need_sync()) keeper_.sync();
+  if (ok) lead_ = r.completed - port_.global_cycle();
+  keep_within_quantum();
   return r;
 }
 
 void MemoryInitiator::advance(Cycle cycles) {
-  keeper_.inc(clock_.duration(cycles));
-  if (config_.mode != TimingMode::kPrecise && keeper_.need_sync()) keeper_.sync();
+  lead_ += cycles;
+  keep_within_quantum();
 }
 
 AccessResult MemoryInitiator::load(uint64_t addr, void* data, uint32_t bytes) {

@@ -1,26 +1,25 @@
 // A stand-alone initiator of memory accesses in either timing mode, for the memory benchmark
 // (model/memory/bench) and the memory system's timing tests. A thread calls
 // load/store/fetch/stream_* from its SC_THREAD; each call is blocking, as an in-order TP waits
-// for its access, and returns when and where the access completed. The chip's TMs do not use
-// it: their memory side, with the chip's timing rules, is ThreadMultiprocessor::transact and
-// sync_to (model/chip/thread_multiprocessor.cpp); issue 37 merges the two.
+// for its access, and returns when and where the access completed. Its time and its accesses go
+// through a MemoryPort (tlm/memory_port.h), the class the chip's TMs use, so the tests and the
+// benchmark exercise the chip's timing rules:
 //
-//   kLooselyTimed: the thread runs ahead of global time within a quantum; a request carries
-//                  its local offset as annotated delay and the answer advances the offset.
-//                  The thread waits only when the offset reaches the quantum.
-//   kPrecise:      the thread waits until global time reaches its local time before every
-//                  access (a quantum of one cycle), so requests reach the targets in time
-//                  order. This is the accuracy reference.
+//   kLooselyTimed: the thread runs ahead of global time; a request carries its lead as annotated
+//                  delay and the answer moves the thread to the completion. The thread waits
+//                  only when its lead reaches the quantum.
+//   kPrecise:      global time catches up with the thread before every access, so requests
+//                  reach the targets in time order. This is the accuracy reference.
 //   kSampled:      the chip's TMs alternate short loosely-timed windows with functional
 //                  fast-forward (docs/sampled-timing.md); an initiator here treats it as
 //                  loosely timed.
 // Targets are the same in every mode: they compute completion from request time + calendars.
+// The thread may also wait on its own (an event): its lead over global time stays what it was.
 #pragma once
 
 #include "tlm/clock.h"
 #include "tlm/memory_extension.h"
-#include "tlm/payload_pool.h"
-#include "tlm/quantum_keeper.h"
+#include "tlm/memory_port.h"
 #include "tlm/timing_mode.h"
 
 #include <systemc>
@@ -30,7 +29,6 @@
 #include <cstdint>
 
 namespace strata::transport {
-
 
 struct InitiatorConfig {
   TimingMode mode = TimingMode::kLooselyTimed;
@@ -75,15 +73,19 @@ class MemoryInitiator : public sc_core::sc_module {
   // Work between accesses (compute cycles): advances this thread's local time.
   void advance(Cycle cycles);
   // Waits until global time reaches this thread's local time.
-  void sync() { keeper_.sync(); }
-  Cycle local_cycle() const { return clock_.cycle_ceil(keeper_.current_time()); }
+  void sync();
+  Cycle local_cycle() const { return Clock().now() + lead_; }
   const InitiatorConfig& config() const { return config_; }
 
  private:
+  // Global time as it stands (the thread may have waited outside the port) plus the lead.
+  Cycle now();
+  // The mode's rule: LT waits once the lead reaches the quantum.
+  void keep_within_quantum();
+
   InitiatorConfig config_;
-  Clock clock_;
-  QuantumKeeper keeper_;
-  PayloadPool pool_;
+  MemoryPort port_;
+  Cycle lead_ = 0;  // this thread's time ahead of global time
 };
 
 }  // namespace strata::transport

@@ -20,8 +20,8 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       env_(env),
       config_(*env.config),
       tm_id_(tm_id),
-      clock_(env.config->clock()),
-      access_ext_(new transport::MemoryExtension),  // owned by access_gp_ from here (set_extension)
+      port_(env.config->clock(), env.config->timing.mode, env.config->timing.quantum_cycles, tm_id,
+            [this](Cycle target) { env_.turns->wait_turn(tm_id_, target); }),
       op_table_(env.config->tm),
       burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
       sync_all_memory_(env.config->timing.mode == transport::TimingMode::kPrecise),
@@ -32,7 +32,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions),
       sessions_(env.node_treelets) {
-  access_gp_.set_extension(access_ext_);
+  port_.set_data_classes(env.data_classes);
   while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
   warming_ = sampler_.enabled() && config_.timing.functional_warming;
   ff_time_order_ = sampler_.enabled() && config_.timing.fast_forward_time_order;
@@ -54,7 +54,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       throw ConfigError("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
     FusedBackendSetup setup;
     setup.tm = tm_id;
-    setup.cycle = [this] { return current_ != nullptr ? current_->timing.next_issue() : global_cycle_; };
+    setup.cycle = [this] { return current_ != nullptr ? current_->timing.next_issue() : port_.global_cycle(); };
     pipeline_backend_ = (*env.pipeline_backend)(setup);
     if (!pipeline_backend_) throw ConfigError("tm.pipeline_impl: rtl, but no RTL pipeline backend was made for TM " +
                                               std::to_string(tm_id));
@@ -108,21 +108,11 @@ void ThreadMultiprocessor::fail(const Tp& tp, const std::string& what) {
 }
 
 void ThreadMultiprocessor::sync_to(Cycle t, Cycle others, bool exact) {
-  // Global time cannot move while this thread runs, so it is read only after a wait.
-  const bool precise = config_.timing.mode == transport::TimingMode::kPrecise;
-  if (t > global_cycle_ && (precise || exact || t - global_cycle_ >= config_.timing.quantum_cycles)) {
-    // Not past the TM's other TPs: the TP being stepped may be up to the TP slack ahead of
-    // them, and global time beyond their next cycles would make every calendar move their
-    // requests to it (a booking before global time starts at global time).
-    const Cycle target = std::min(t, others);
-    if (target <= global_cycle_) return;
-    env_.turns->wait_turn(tm_id_, target);
-    stamp_ = sc_core::sc_time_stamp().value();
-    global_cycle_ = clock_.now_at(stamp_);
-    // The crossbar may forget what lies before every TP of this TM: the TP being stepped
-    // may be up to the TP slack ahead of the others (which can still ask for those cycles).
-    xus_.retire_before(global_cycle_ > burst_slack_ ? global_cycle_ - burst_slack_ : 0);
-  }
+  if (!port_.sync_to(t, others, exact)) return;
+  // The crossbar may forget what lies before every TP of this TM: the TP being stepped may be
+  // up to the TP slack ahead of the others (which can still ask for those cycles).
+  const Cycle global = port_.global_cycle();
+  xus_.retire_before(global > burst_slack_ ? global - burst_slack_ : 0);
 }
 
 Cycle ThreadMultiprocessor::synchronised_issue(Tp& tp) {
@@ -150,9 +140,8 @@ void ThreadMultiprocessor::run() {
   schedule_ = TpSchedule(static_cast<uint32_t>(tps_.size()));
   TpSchedule& schedule = schedule_;
   live_tps_ = static_cast<uint32_t>(tps_.size());
-  env_.turns->wait_turn(tm_id_, clock_.now());  // registers; no TM runs before all have
-  stamp_ = sc_core::sc_time_stamp().value();
-  global_cycle_ = clock_.now_at(stamp_);
+  env_.turns->wait_turn(tm_id_, port_.clock().now());  // registers; no TM runs before all have
+  port_.observe();
   while (schedule.top() != TpSchedule::kDone && error_.empty()) {
     const uint64_t best = schedule.top();
     const uint64_t second = schedule.runner_up();
@@ -226,28 +215,23 @@ void ThreadMultiprocessor::run() {
   env_.turns->leave();
 }
 
-Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
-                                     AccessClass access, uint64_t addr, void* data, uint32_t bytes,
-                                     Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
-                                     MemoryExtension* result) {
-  tlm::tlm_generic_payload& gp = access_gp_;
-  MemoryExtension& ext = *access_ext_;
-  transport::prepare_access(gp, ext, access, addr, data, bytes, tp.thread_id, tm_id_, treelet, timing_only,
-                            sampler_.in_batch(), !counting());
-  if ((access == AccessClass::kDataLoad || access == AccessClass::kDataStore) && env_.data_classes)
-    ext.data = env_.data_classes->of(addr);
-  sc_core::sc_time delay = clock_.delay_until_at(stamp_, at);
-  port->b_transport(gp, delay);
-  if (gp.get_response_status() != tlm::TLM_OK_RESPONSE) {
-    fail(tp, "memory access to 0x" + [&] {
-      char b[16];
-      std::snprintf(b, sizeof b, "%08llx", static_cast<unsigned long long>(addr));
-      return std::string(b);
-    }() + " was refused: " + gp.get_response_string());
-    return at;
-  }
-  if (result) *result = ext;
-  return clock_.request_cycle_at(stamp_, delay);
+Cycle ThreadMultiprocessor::transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& socket,
+                                     AccessClass access, uint64_t addr, void* data, uint32_t bytes, Cycle at,
+                                     bool timing_only, uint32_t treelet, Tp& tp) {
+  transport::PortAccess a;
+  a.access = access;
+  a.addr = addr;
+  a.data = data;
+  a.bytes = bytes;
+  a.at = at;
+  a.thread = tp.thread_id;
+  a.treelet = treelet;
+  a.timing_only = timing_only;
+  a.functional = sampler_.in_batch();
+  a.uncounted = !counting();
+  Cycle completed = at;
+  if (!port_.access(socket, a, &completed)) fail(tp, port_.refusal());
+  return completed;
 }
 
 Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
@@ -258,7 +242,7 @@ Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
   if (counting()) ++counters_.icache_fetch_requests;
   uint32_t word = 0;
   return transact(fetch_port, AccessClass::kInstructionFetch, pc, &word, 4, tp.timing.next_issue(), true,
-                  transport::kNoTreelet, tp, nullptr);
+                  transport::kNoTreelet, tp);
 }
 
 Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
@@ -283,7 +267,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     if (counting()) ++counters_.path_state_requests;
     uint8_t scratch[48];
     return transact(stream_port, r.store ? AccessClass::kStreamPathWrite : AccessClass::kStreamPathRead, r.first,
-                    scratch, r.last - r.first, at, true, transport::kNoTreelet, tp, nullptr);
+                    scratch, r.last - r.first, at, true, transport::kNoTreelet, tp);
   }
   // One request per cache line touched (a pipeline operand may straddle two lines); they
   // issue together and the access completes with the last of them.
@@ -296,8 +280,8 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     const uint32_t bytes = std::min<uint32_t>(end - a, sizeof scratch);
     if (counting()) ++counters_.l1_requests;
     ready = std::max(ready, transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, a,
-                                     scratch, bytes, at, true, transport::kNoTreelet, tp, nullptr));
-    if (config_.design.streams && counting()) sessions_.answered(access_ext_->served_by);  // as the L1 counts fills
+                                     scratch, bytes, at, true, transport::kNoTreelet, tp));
+    if (config_.design.streams && counting()) sessions_.answered(port_.answer().served_by);  // as the L1 counts fills
     a += bytes;
   }
   return ready;
@@ -333,7 +317,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     ++counters_.measured_instructions;
     if (is_data_op(iss::op_info(decoded.op).cls)) ++counters_.measured_data_ops;
   }
-  if (trace_.enabled()) trace_.count(tr_instructions_, 1, global_cycle_);
+  if (trace_.enabled()) trace_.count(tr_instructions_, 1, port_.global_cycle());
   if (memory_like) {
     Cycle ready = earliest + 1;
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
@@ -356,10 +340,10 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     }
     tp.timing.issue(decoded, fetch_ready, xus_);
     if (trace_.enabled()) {
-      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, global_cycle_);
-      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, global_cycle_);
+      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, port_.global_cycle());
+      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, port_.global_cycle());
       if (iss::op_info(decoded.op).cls == iss::InstrClass::kStrataPipeConfig)
-        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), global_cycle_);
+        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), port_.global_cycle());
     }
   }
   return !stopped && error_.empty();
@@ -427,7 +411,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
                            "(the *_compact kernels need design.path_state=compact)";
     return result;
   }
-  MemoryExtension ext;
+  const MemoryExtension& ext = port_.answer();  // each case reads the answer of its one access
   uint8_t scratch[64] = {};
   if (counting()) ++counters_.stream_requests;
   if (ray_bytes != 0) {
@@ -438,14 +422,14 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
       hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,
-                             transport::kNoTreelet, tp, &ext);
+                             transport::kNoTreelet, tp);
       result.dest[0] = ext.result;
       break;
     case iss::Op::kStStreamPush:
     case iss::Op::kStStreamPush64:
       std::memcpy(scratch, call.in, ray_bytes);
       hook_ready_ = transact(stream_port, AccessClass::kStreamPush, 0, scratch, ray_bytes, request_cycle_, false,
-                             call.rs2, tp, &ext);
+                             call.rs2, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
       op_class_ = result.dest[0] ? TmSampler::kPushStored : TmSampler::kPushFull;
@@ -453,7 +437,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
     case iss::Op::kStStreamPop:
     case iss::Op::kStStreamPop64:
       hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, request_cycle_, false,
-                             transport::kNoTreelet, tp, &ext);
+                             transport::kNoTreelet, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       op_class_ = result.dest[0] ? TmSampler::kPopRay : TmSampler::kPopEmpty;
       if (result.dest[0]) {
@@ -464,12 +448,12 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       break;
     default:  // kStStreamAssign
       hook_ready_ = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, request_cycle_, false,
-                             transport::kNoTreelet, tp, &ext);
+                             transport::kNoTreelet, tp);
       result.dest[0] = ext.result;
       sessions_.assigned(ext.result);
       op_class_ = ext.result == transport::kNoTreelet ? TmSampler::kAssignNone : TmSampler::kAssignFound;
       if (trace_.enabled())
-        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), global_cycle_);
+        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), port_.global_cycle());
       break;
   }
   if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);

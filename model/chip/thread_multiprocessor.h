@@ -49,6 +49,7 @@
 #include "model/tm/tp_timing.h"
 #include "model/tm/xu_crossbar.h"
 #include "tlm/clock.h"
+#include "tlm/memory_port.h"
 #include "tlm/payload_pool.h"
 
 namespace strata::chip {
@@ -137,10 +138,11 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
  private:
   struct Tp;
   void run();
-  // Lets global time catch up with `t` when the TM's lead calls for it (precise: always;
-  // `exact`: always), but never past `others`, the earliest next cycle of the TM's other TPs:
-  // a TP behind global time would have its requests moved to it by every calendar.
-  void sync_to(transport::Cycle t, transport::Cycle others = ~transport::Cycle{0}, bool exact = false);
+  // The memory port's sync_to (tlm/memory_port.h): global time catches up with `t` when the
+  // TM's lead calls for it, never past `others`, the earliest next cycle of the TM's other TPs
+  // (a TP behind global time would have its requests moved to it by every calendar). After a
+  // wait, the XU crossbar forgets what lies before every TP of the TM.
+  void sync_to(transport::Cycle t, transport::Cycle others = transport::MemoryPort::kNoLimit, bool exact = false);
   // The cycle at which `tp`'s next instruction must reach the shared resources in time order
   // (precise: every memory-like op; LT with timing.sync_shared_ops: stream and global-register
   // ops), or 0 if it need not. Makes the instruction's fetch (kept in the Tp).
@@ -154,10 +156,11 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool counting() const { return sampler_.counting(); }
   transport::Cycle fetch(Tp& tp, uint32_t pc);
   transport::Cycle time_data_access(Tp& tp, transport::Cycle at);
-  transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& port,
+  // One access of `tp` through the memory port; its answer is port_.answer(). A refused one
+  // fails the TP and returns `at`.
+  transport::Cycle transact(tlm_utils::simple_initiator_socket<ThreadMultiprocessor>& socket,
                             transport::AccessClass access, uint64_t addr, void* data, uint32_t bytes,
-                            transport::Cycle at, bool timing_only, uint32_t treelet, Tp& tp,
-                            transport::MemoryExtension* result);
+                            transport::Cycle at, bool timing_only, uint32_t treelet, Tp& tp);
   void fail(const Tp& tp, const std::string& what);
   void register_stats();  // tm_statistics.cpp
   void refresh_stats();
@@ -170,13 +173,9 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmEnvironment env_;
   const ChipConfig& config_;
   uint32_t tm_id_;
-  transport::Clock clock_;
   transport::PayloadPool pool_;  // fast-forward's warming accesses
-  // The payload of the TM's own accesses. Its thread has one in flight at a time (b_transport
-  // blocks, and no target keeps a payload), so one payload, set up in full per access, serves
-  // them all: no pool round trip and no extension lookup per access.
-  tlm::tlm_generic_payload access_gp_;
-  transport::MemoryExtension* access_ext_;
+  // Time against global time, and the TM's own accesses (tlm/memory_port.h).
+  transport::MemoryPort port_;
   tm::OpTimingTable op_table_;
   transport::Cycle burst_slack_;
   bool sync_all_memory_ = false;  // precise mode
@@ -190,8 +189,6 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmCounters counters_;
   std::string error_;
   bool finished_ = false;
-  transport::Cycle global_cycle_ = 0;  // global time, as of this thread's last wait
-  uint64_t stamp_ = 0;                 // ... in kernel time units (it stands still between waits)
   uint32_t live_tps_ = 0;              // TPs that have not halted
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 
