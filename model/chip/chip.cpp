@@ -7,6 +7,7 @@
 
 #include "firmware/abi/boot_block.h"
 #include "model/chip/design.h"
+#include "model/memory/memory_level_factory.h"
 #include "model/memory/stream_sram.h"
 
 namespace strata::chip {
@@ -39,13 +40,15 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   done_register_ = checked_design(config_.design).done_register;
   load(inputs, elf);
 
-  dram_ = std::make_unique<memory::Dram>("dram", config_.dram, backing_);
-  l2_ = std::make_unique<memory::L2Cache>("l2", config_.l2, backing_);
-  stream_ = std::make_unique<memory::StreamMemory>("stream", config_.stream);
+  // The shared levels through their interfaces (memory_levels.h), each the model its config
+  // names, checked against the statistics the chip reads of it.
+  dram_ = memory::make_dram_level("dram", config_.dram, backing_);
+  l2_ = memory::make_l2_level("l2", config_.l2, backing_);
+  stream_ = memory::make_stream_level("stream", config_.stream);
   interconnect_ = std::make_unique<memory::Interconnect>("interconnect", config_.interconnect);
-  interconnect_->l2_side.bind(l2_->target);
-  interconnect_->stream_side.bind(stream_->target);
-  l2_->downstream.bind(dram_->target);
+  interconnect_->l2_side.bind(l2_->target_socket());
+  interconnect_->stream_side.bind(stream_->target_socket());
+  l2_->downstream_socket().bind(dram_->target_socket());
   const transport::Clock clock = config_.clock();
   dram_->set_clock(clock);
   l2_->set_clock(clock);

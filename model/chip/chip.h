@@ -20,13 +20,11 @@
 #include "model/chip/window_sampler.h"
 #include "model/iss/code_image.h"
 #include "model/iss/elf_loader.h"
-#include "model/memory/dram.h"
 #include "model/memory/interconnect.h"
 #include "model/memory/l1_data_cache.h"
 #include "model/memory/l1_instruction_cache.h"
-#include "model/memory/l2_cache.h"
+#include "model/memory/memory_levels.h"
 #include "model/memory/sparse_memory.h"
-#include "model/memory/stream_memory.h"
 #include "model/stats/stat_group.h"
 #include "tlm/data_class.h"
 
@@ -80,9 +78,9 @@ class Chip : public sc_core::sc_module {
   const std::vector<std::unique_ptr<ThreadMultiprocessor>>& tms() const { return tms_; }
   const std::vector<std::unique_ptr<memory::L1DataCache>>& l1d() const { return l1d_; }
   const std::vector<std::unique_ptr<memory::L1InstructionCache>>& l1i() const { return l1i_; }
-  const memory::L2Cache& l2() const { return *l2_; }
-  const memory::StreamMemory& stream() const { return *stream_; }
-  const memory::Dram& dram() const { return *dram_; }
+  const memory::L2Level& l2() const { return *l2_; }
+  const memory::StreamLevel& stream() const { return *stream_; }
+  const memory::DramLevel& dram() const { return *dram_; }
   const memory::Interconnect& interconnect() const { return *interconnect_; }
   const memory::SparseMemory& backing() const { return backing_; }
   const transport::DataClassMap& data_classes() const { return data_classes_; }
@@ -111,9 +109,9 @@ class Chip : public sc_core::sc_module {
   uint32_t spp_ = 1;
   bool samples_together_ = false;  // the kernel got per-sample slots (guest_layout.h)
   uint32_t node_treelets_ = 0;  // from the scene header: treelets [0, n) hold nodes
-  std::unique_ptr<memory::Dram> dram_;
-  std::unique_ptr<memory::L2Cache> l2_;
-  std::unique_ptr<memory::StreamMemory> stream_;
+  std::unique_ptr<memory::DramLevel> dram_;
+  std::unique_ptr<memory::L2Level> l2_;
+  std::unique_ptr<memory::StreamLevel> stream_;
   std::unique_ptr<memory::Interconnect> interconnect_;
   std::vector<std::unique_ptr<memory::L1DataCache>> l1d_;
   std::vector<std::unique_ptr<memory::L1InstructionCache>> l1i_;

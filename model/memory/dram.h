@@ -11,6 +11,7 @@
 #include "model/memory/bank_interleave.h"
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
+#include "model/memory/memory_levels.h"
 #include "model/memory/dram_banked.h"
 #include "model/memory/sparse_memory.h"
 #include "model/stats/stat_group.h"
@@ -28,9 +29,10 @@
 
 namespace strata::memory {
 
-class Dram : public sc_core::sc_module {
+class Dram : public sc_core::sc_module, public DramLevel {
  public:
   tlm_utils::simple_target_socket<Dram> target{"target"};
+  tlm::tlm_target_socket<>& target_socket() override { return target; }
 
   struct ChannelCounters {
     uint64_t accesses = 0;  // bursts of up to burst_bytes
@@ -55,10 +57,10 @@ class Dram : public sc_core::sc_module {
   }
   // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
   // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
-  void set_clock(const transport::Clock& clock);
+  void set_clock(const transport::Clock& clock) override;
   const Counters& counters() const { return counters_; }
   const ChannelCounters& channel(uint32_t c) const { return channels_[c]; }
-  const stats::Group& stats() const { return stats_; }
+  const stats::Group& stats() const override { return stats_; }
   const DramConfig& config() const { return config_; }
   SparseMemory& backing() { return backing_; }
   const BankedDram* banked() const { return banked_.get(); }  // null unless model = banked
@@ -66,7 +68,7 @@ class Dram : public sc_core::sc_module {
   // VCD: per channel, bytes per cycle over each window and queue depth (booked cycles ahead);
   // banked, over the whole DRAM: row hits, misses and conflicts per cycle, the latest read latency.
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
-  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window) override;
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

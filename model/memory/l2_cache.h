@@ -10,6 +10,7 @@
 
 #include "model/memory/cache_path.h"
 #include "model/memory/config.h"
+#include "model/memory/memory_levels.h"
 #include "model/memory/sparse_memory.h"
 #include "model/memory/window_trace.h"
 #include "model/stats/stat_group.h"
@@ -24,10 +25,12 @@
 
 namespace strata::memory {
 
-class L2Cache : public sc_core::sc_module {
+class L2Cache : public sc_core::sc_module, public L2Level {
  public:
   tlm_utils::simple_target_socket<L2Cache> target{"target"};        // from the interconnect
   tlm_utils::simple_initiator_socket<L2Cache> downstream{"downstream"};  // to DRAM
+  tlm::tlm_target_socket<>& target_socket() override { return target; }
+  tlm::tlm_initiator_socket<>& downstream_socket() override { return downstream; }
 
   using Counters = CacheCounters;
   struct BankCounters {
@@ -38,14 +41,14 @@ class L2Cache : public sc_core::sc_module {
 
   // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
   // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
-  void set_clock(const transport::Clock& clock) { path_.set_clock(clock); }
+  void set_clock(const transport::Clock& clock) override { path_.set_clock(clock); }
   const Counters& counters() const { return path_.counters(); }
   const BankCounters& bank(uint32_t b) const { return banks_[b]; }
-  const stats::Group& stats() const { return stats_; }
+  const stats::Group& stats() const override { return stats_; }
   const CacheCore& core() const { return path_.core(); }
   double energy_per_access_nj() const { return path_.access_energy_nj(); }
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
-  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window) override;
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);

@@ -20,6 +20,7 @@
 
 #include "model/memory/config.h"
 #include "model/memory/data_traffic.h"
+#include "model/memory/memory_levels.h"
 #include "model/stats/stat_group.h"
 #include "model/memory/stream_occupancy.h"
 #include "model/memory/stream_scheduler.h"
@@ -37,9 +38,10 @@
 
 namespace strata::memory {
 
-class StreamMemory : public sc_core::sc_module {
+class StreamMemory : public sc_core::sc_module, public StreamLevel {
  public:
   tlm_utils::simple_target_socket<StreamMemory> target{"target"};
+  tlm::tlm_target_socket<>& target_socket() override { return target; }
 
   struct Counters {
     uint64_t accesses = 0, pushes = 0, pops = 0, queries = 0;
@@ -53,24 +55,24 @@ class StreamMemory : public sc_core::sc_module {
 
   StreamMemory(sc_core::sc_module_name name, const StreamMemoryConfig& config);
 
-  uint32_t capacity() const { return sram_.capacity(); }
-  uint32_t stored() const { return sram_.stored(); }
+  uint32_t capacity() const override { return sram_.capacity(); }
+  uint32_t stored() const override { return sram_.stored(); }
   uint32_t credits() const { return sram_.credits(); }  // rays held by threads that popped one
   // Rays in flight (stored + held), the buffers holding rays, over the frame.
-  const StreamOccupancy& occupancy() const { return occupancy_; }
+  const StreamOccupancy& occupancy() const override { return occupancy_; }
   uint32_t size(uint32_t treelet) const { return sram_.size(treelet); }
-  const StreamLayout& layout() const { return sram_.layout(); }
+  const StreamLayout& layout() const override { return sram_.layout(); }
   const StreamScheduler& scheduler() const { return scheduler_; }
   uint64_t overflow_bookings() const;
   // The chip's clock (default 1 GHz). Before sc_start: every module of a chip must count in
   // the same cycles as the TMs, or each latency in cycles stretches by the ratio of the clocks.
-  void set_clock(const transport::Clock& clock) { clock_ = clock; }
+  void set_clock(const transport::Clock& clock) override { clock_ = clock; }
   const Counters& counters() const { return counters_.counted; }
-  const stats::Group& stats() const { return stats_; }
+  const stats::Group& stats() const override { return stats_; }
   double energy_per_access_nj() const { return energy_per_access_; }
   // VCD: rays stored, pushes and pops per cycle, rejected pushes per cycle.
   using sc_core::sc_object::trace;  // ours adds a window; the base's stays visible
-  void trace(sc_core::sc_trace_file* file, const TraceWindow& window);
+  void trace(sc_core::sc_trace_file* file, const TraceWindow& window) override;
 
  private:
   void b_transport(tlm::tlm_generic_payload& gp, sc_core::sc_time& delay);
