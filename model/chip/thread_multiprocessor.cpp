@@ -70,11 +70,6 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
     t.pipe.set_backend(pipeline_backend_.get());  // null: the C++ pipeline model
   }
   register_stats();
-  tr_mode_ = trace_.add_level("pipeline_mode");
-  tr_instructions_ = trace_.add_rate("instructions");
-  tr_box_ = trace_.add_rate("box_tests");
-  tr_triangle_ = trace_.add_rate("triangle_tests");
-  tr_treelet_ = trace_.add_level("treelet");
   SC_THREAD(run);
 }
 
@@ -317,7 +312,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
     ++counters_.measured_instructions;
     if (is_data_op(iss::op_info(decoded.op).cls)) ++counters_.measured_data_ops;
   }
-  if (trace_.enabled()) trace_.count(tr_instructions_, 1, port_.global_cycle());
+  trace_.instructions(1, port_.global_cycle());
   if (memory_like) {
     Cycle ready = earliest + 1;
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
@@ -339,12 +334,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
       ++counters_.forced_reconfigurations;
     }
     tp.timing.issue(decoded, fetch_ready, xus_);
-    if (trace_.enabled()) {
-      if (decoded.op == iss::Op::kStBoxTest) trace_.count(tr_box_, 1, port_.global_cycle());
-      if (decoded.op == iss::Op::kStTriangleTest) trace_.count(tr_triangle_, 1, port_.global_cycle());
-      if (iss::op_info(decoded.op).cls == iss::InstrClass::kStrataPipeConfig)
-        trace_.level(tr_mode_, static_cast<double>(xus_.mode()), port_.global_cycle());
-    }
+    trace_.pipeline_op(decoded.op, static_cast<double>(xus_.mode()), port_.global_cycle());
   }
   return !stopped && error_.empty();
 }
@@ -452,8 +442,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       result.dest[0] = ext.result;
       sessions_.assigned(ext.result);
       op_class_ = ext.result == transport::kNoTreelet ? TmSampler::kAssignNone : TmSampler::kAssignFound;
-      if (trace_.enabled())
-        trace_.level(tr_treelet_, ext.result == transport::kNoTreelet ? -1.0 : double(ext.result), port_.global_cycle());
+      trace_.treelet(ext.result, port_.global_cycle());
       break;
   }
   if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);

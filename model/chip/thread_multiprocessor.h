@@ -37,6 +37,7 @@
 #include "model/chip/fused_backend_factory.h"
 #include "model/chip/global_registers.h"
 #include "model/chip/tm_sampler.h"
+#include "model/chip/tm_trace.h"
 #include "model/chip/tp_memory.h"
 #include "model/chip/tp_schedule.h"
 #include "model/chip/turn_order.h"
@@ -219,8 +220,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TreeletSessions sessions_;
   std::vector<std::unique_ptr<stats::Group>> stat_groups_;  // the sub-groups of both
 
-  memory::WindowTrace trace_;
-  std::size_t tr_mode_ = 0, tr_instructions_ = 0, tr_box_ = 0, tr_triangle_ = 0, tr_treelet_ = 0;
+  TmTrace trace_;  // VCD signals
 };
 
 }  // namespace strata::chip

@@ -48,7 +48,7 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   if (warming_) replay_warm_log(tp);
   counters_.instructions += r.executed;
   ++counters_.fast_forward_batches;
-  if (trace_.enabled()) trace_.count(tr_instructions_, r.executed, port_.global_cycle());
+  trace_.instructions(r.executed, port_.global_cycle());
   const uint64_t waits = std::min<uint64_t>(sampler_.batch_waits(), r.executed);
   tp.ff_clock += sampler_.charge(r.executed, waits);
   tp.timing.skip_to(std::max(start + 1, static_cast<Cycle>(std::ceil(tp.ff_clock))));
