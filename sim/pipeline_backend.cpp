@@ -27,7 +27,7 @@ void RtlVcdSet::commit() {
 
 #if STRATA_HAVE_RTL
 
-chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, const RtlVcdOptions& vcd) {
+tm::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, const RtlVcdOptions& vcd) {
   rtl::RtlBackendConfig base;
   base.box_latency = config.tm.pipelines.box.latency;
   base.triangle_latency = config.tm.pipelines.triangle.latency;
@@ -37,7 +37,7 @@ chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, c
   base.ps_per_cycle = std::max<uint64_t>(1, static_cast<uint64_t>(std::llround(1000.0 / config.clock_ghz)));
   const std::string vcd_base = vcd.base;
   const std::shared_ptr<RtlVcdSet> files = vcd.files;
-  return [base, vcd_base, files](const chip::FusedBackendSetup& setup) -> std::unique_ptr<iss::FusedPipelineBackend> {
+  return [base, vcd_base, files](const tm::FusedBackendSetup& setup) -> std::unique_ptr<iss::FusedPipelineBackend> {
     rtl::RtlBackendConfig c = base;
     c.cycle = setup.cycle;
     if (vcd_base.empty()) return std::make_unique<rtl::RtlFusedBackend>("rtl_pipelines", std::move(c));
@@ -54,7 +54,7 @@ chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, c
 
 #else
 
-chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig&, const RtlVcdOptions&) {
+tm::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig&, const RtlVcdOptions&) {
   throw chip::ConfigError(
       "tm.pipeline_impl: rtl is not available: this strata-sim was built with -DSTRATA_RTL=OFF (no verilated "
       "pipelines); rebuild with -DSTRATA_RTL=ON (needs Verilator, scripts/install-deps) or use "

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "model/chip/chip_config.h"
-#include "model/chip/fused_backend_factory.h"
+#include "model/tm/fused_backend_factory.h"
 #include "sim/output_file.h"
 
 namespace strata::sim {
@@ -50,6 +50,6 @@ std::string rtl_vcd_path(const std::string& base, uint32_t tm);
 
 // Throws chip::ConfigError naming tm.pipeline_impl when this strata-sim was built without the
 // RTL (-DSTRATA_RTL=OFF).
-chip::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, const RtlVcdOptions& vcd);
+tm::FusedBackendFactory rtl_pipeline_backend(const chip::ChipConfig& config, const RtlVcdOptions& vcd);
 
 }  // namespace strata::sim

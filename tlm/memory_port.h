@@ -1,6 +1,6 @@
 // The memory side of one initiator thread: its time against global time, and its blocking
 // accesses to the memory modules, under the chip's timing rules. The chip's TMs use it
-// (model/chip/thread_multiprocessor.cpp), and so does MemoryInitiator, which drives the memory
+// (model/tm/thread_multiprocessor.cpp), and so does MemoryInitiator, which drives the memory
 // tests and the memory benchmark: both exercise this one set of rules.
 //
 // Time. The thread runs ahead of global time, and asks global time to catch up with a cycle t
@@ -11,7 +11,7 @@
 //   kPrecise:     whenever t is ahead, so every request reaches its target in time order.
 // Never past `others` (a TM's other TPs, whose requests every calendar would move to global
 // time if it overtook them). How the thread waits is its owner's (`WaitUntil`): the chip's TMs
-// take turns (model/chip/turn_order.h), a stand-alone initiator waits on the kernel.
+// take turns (model/tm/turn_order.h), a stand-alone initiator waits on the kernel.
 //
 // Accesses. A request carries its cycle as annotated delay against global time as of the last
 // wait, and the target answers with the completion in the same delay. One payload and

@@ -29,6 +29,24 @@ iss::CodeImage build_code(const iss::ElfImage& elf) {
   return iss::CodeImage(static_cast<uint32_t>(low), std::move(words));
 }
 
+// What the TMs need of the config (model/tm/tm_setup.h).
+tm::TmSetup tm_setup_for(const ChipConfig& c) {
+  tm::TmSetup s;
+  s.tms = c.tms;
+  s.tps_per_tm = c.tps_per_tm;
+  s.tp_stack_bytes = c.tp_stack_bytes;
+  s.l1d_line_bytes = c.l1d.line_bytes;
+  s.l1d_size_bytes = c.l1d.size_bytes;
+  s.l1i_line_bytes = c.l1i.line_bytes;
+  s.streams = c.design.streams;
+  s.global_register_latency_cycles = c.global_register_latency_cycles;
+  s.tm = c.tm;
+  s.timing = c.timing;
+  s.clock = c.clock();
+  for (uint32_t t = 0; t < c.tms; ++t) s.rtl_pipelines.push_back(c.rtl_pipelines(t));
+  return s;
+}
+
 }  // namespace
 
 Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameInputs& inputs)
@@ -62,8 +80,9 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   // The window sampler takes its turn after the TMs' at the same cycle (id config_.tms).
   const bool sampled = config_.timing.mode == transport::TimingMode::kSampled;
   turns_ = std::make_unique<TurnOrder>(config_.tms + (sampled ? 1u : 0u), config_.tms, clock);
+  tm_setup_ = tm_setup_for(config_);
   TmEnvironment env;
-  env.config = &config_;
+  env.setup = &tm_setup_;
   env.turns = turns_.get();
   env.schedule = schedule_.get();
   env.backing = &backing_;
@@ -82,6 +101,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.report_cycle = &report_cycle_;
   env.node_treelets = node_treelets_;
   pipeline_backend_ = inputs.pipeline_backend;
+  if (config_.pipeline_impl == PipelineImpl::kRtl && !pipeline_backend_)
+    throw ConfigError("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
   env.pipeline_backend = &pipeline_backend_;
   for (uint32_t t = 0; t < config_.tms; ++t) {
     const std::string n = std::to_string(t);

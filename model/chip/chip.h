@@ -13,10 +13,10 @@
 
 #include "firmware/abi/frame_abi.h"
 #include "model/chip/chip_config.h"
-#include "model/chip/fused_backend_factory.h"
-#include "model/chip/global_registers.h"
+#include "model/tm/fused_backend_factory.h"
+#include "model/tm/global_registers.h"
 #include "model/chip/guest_layout.h"
-#include "model/chip/thread_multiprocessor.h"
+#include "model/tm/thread_multiprocessor.h"
 #include "model/chip/window_sampler.h"
 #include "model/iss/code_image.h"
 #include "model/iss/elf_loader.h"
@@ -29,6 +29,16 @@
 #include "tlm/data_class.h"
 
 namespace strata::chip {
+
+// The TM's types the chip's interface names (model/tm/).
+using tm::FusedBackendFactory;
+using tm::FusedBackendSetup;
+using tm::GlobalRegisters;
+using tm::SamplingSchedule;
+using tm::ThreadMultiprocessor;
+using tm::TmCounters;
+using tm::TmEnvironment;
+using tm::TurnOrder;
 
 // What one frame needs besides the chip: the kernel, the scene image and the frame setup.
 struct FrameInputs {
@@ -100,6 +110,7 @@ class Chip : public sc_core::sc_module {
   ChipConfig config_;
   memory::SparseMemory backing_;
   GlobalRegisters globals_;
+  tm::TmSetup tm_setup_;  // the chip as its TMs see it (from config_)
   iss::CodeImage code_;
   std::string kernel_name_, kernel_digest_;
   uint32_t done_register_ = 0;  // where the design's kernel counts finished work (design.h)

@@ -18,12 +18,15 @@
 #include <systemc>
 
 #include "model/chip/chip_config.h"
-#include "model/chip/sampling_schedule.h"
-#include "model/chip/turn_order.h"
+#include "model/tm/sampling_schedule.h"
+#include "model/tm/turn_order.h"
 #include "model/stats/batch_means.h"
 #include "model/stats/stat_group.h"
 
 namespace strata::chip {
+
+using tm::SamplingSchedule;
+using tm::TurnOrder;
 
 class WindowSampler : public sc_core::sc_module {
  public:

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace strata::chip {
+namespace strata::tm {
 
 class TpSchedule {
  public:
@@ -51,4 +51,4 @@ class TpSchedule {
   std::vector<uint64_t> tree_;  // [1] is the root; leaves at [leaves_, 2 * leaves_)
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -10,7 +10,7 @@
 
 #include "model/iss/fused_pipeline_backend.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 struct FusedBackendSetup {
   uint32_t tm = 0;
@@ -21,4 +21,4 @@ struct FusedBackendSetup {
 
 using FusedBackendFactory = std::function<std::unique_ptr<iss::FusedPipelineBackend>(const FusedBackendSetup&)>;
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -3,9 +3,9 @@
 // Private to the TM's own source files (thread_multiprocessor.cpp, tm_fast_forward.cpp).
 #pragma once
 
-#include "model/chip/thread_multiprocessor.h"
+#include "model/tm/thread_multiprocessor.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 struct ThreadMultiprocessor::Tp {
   Tp(iss::CodeImage& code, memory::SparseMemory& backing, const TmEnvironment& env,
@@ -13,10 +13,10 @@ struct ThreadMultiprocessor::Tp {
       : memory(backing, env.guest_low, env.guest_high),
         hart(code, memory, hook, thread),
         timing(table),
-        pipe(iss::FunctionalStrataHook::Config{tp, tm, env.config->tps_per_tm, env.config->tms, 0}),
+        pipe(iss::FunctionalStrataHook::Config{tp, tm, env.setup->tps_per_tm, env.setup->tms, 0}),
         thread_id(thread),
-        stack_lo(env.stacks_base + thread * env.config->tp_stack_bytes),
-        stack_hi(stack_lo + env.config->tp_stack_bytes) {}
+        stack_lo(env.stacks_base + thread * env.setup->tp_stack_bytes),
+        stack_hi(stack_lo + env.setup->tp_stack_bytes) {}
   TpMemory memory;
   iss::Hart<TpMemory> hart;
   tm::TpTiming timing;
@@ -36,4 +36,4 @@ struct ThreadMultiprocessor::Tp {
   transport::Cycle begun_at = 0;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

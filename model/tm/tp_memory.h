@@ -10,7 +10,7 @@
 
 #include "model/memory/sparse_memory.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 struct AccessRecord {
   uint32_t first = 0, last = 0;  // byte range touched by the current instruction [first, last)
@@ -123,4 +123,4 @@ class TpMemory {
   WarmLog* warm_ = nullptr;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

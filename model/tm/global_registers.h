@@ -8,11 +8,11 @@
 
 #include "firmware/abi/strata_isa.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 struct GlobalRegisters {
   std::array<uint32_t, STRATA_GLOBAL_REGISTERS> values{};
   uint64_t operations = 0;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -41,7 +41,7 @@
 #include <memory>
 #include <vector>
 
-namespace strata::chip {
+namespace strata::tm {
 
 class TreeletSessions {
  public:
@@ -118,4 +118,4 @@ class TreeletSessions {
   std::vector<std::unique_ptr<stats::Group>> groups_;  // the sub-groups
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

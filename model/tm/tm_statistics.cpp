@@ -1,10 +1,10 @@
 // A TM's statistics groups: the instructions its TPs retired (exact, from the ISS), their
 // stall cycles and memory requests (from the timing), and its XU crossbar's use by mode and
 // unit class. The chip sums them over the TMs (chip.cpp).
-#include "model/chip/tm_thread_processor.h"
+#include "model/tm/tm_thread_processor.h"
 #include "model/stats/stat_values.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 using stats::Basis;
 using stats::Unit;
@@ -104,10 +104,10 @@ void ThreadMultiprocessor::register_stats() {
     modes.level(tm::mode_name(tm::PipelineMode(m)), &x.mode_cycles[m], Unit::kCycles,
                 "Cycles the TM's reconfigurable units were in this mode.");
   xu.child(&modes);
-  const uint32_t units[tm::kXuClassCount] = {config_.tm.xu.fp_mul.count,      config_.tm.xu.fp_add.count,
-                                             config_.tm.xu.fp_cmp.count,      config_.tm.xu.fp_div.count,
-                                             config_.tm.xu.fp_inv_sqrt.count, config_.tm.xu.int_mul.count,
-                                             config_.tm.xu.int_div.count};
+  const uint32_t units[tm::kXuClassCount] = {setup_.tm.xu.fp_mul.count,      setup_.tm.xu.fp_add.count,
+                                             setup_.tm.xu.fp_cmp.count,      setup_.tm.xu.fp_div.count,
+                                             setup_.tm.xu.fp_inv_sqrt.count, setup_.tm.xu.int_mul.count,
+                                             setup_.tm.xu.int_div.count};
   stats::Group& by_mode = sub("by_mode", "Use of each unit class, by the mode in force when the operation started.");
   for (unsigned m = 0; m < tm::kModeCount; ++m) {
     const char* mode = tm::mode_name(tm::PipelineMode(m));
@@ -132,4 +132,4 @@ void ThreadMultiprocessor::register_stats() {
   xu.child(&by_mode);
 }
 
-}  // namespace strata::chip
+}  // namespace strata::tm

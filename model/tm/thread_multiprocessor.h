@@ -33,15 +33,15 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
-#include "model/chip/chip_config.h"
-#include "model/chip/fused_backend_factory.h"
-#include "model/chip/global_registers.h"
-#include "model/chip/tm_sampler.h"
-#include "model/chip/tm_trace.h"
-#include "model/chip/tp_memory.h"
-#include "model/chip/tp_schedule.h"
-#include "model/chip/turn_order.h"
-#include "model/chip/treelet_sessions.h"
+#include "model/tm/fused_backend_factory.h"
+#include "model/tm/global_registers.h"
+#include "model/tm/tm_sampler.h"
+#include "model/tm/tm_setup.h"
+#include "model/tm/tm_trace.h"
+#include "model/tm/tp_memory.h"
+#include "model/tm/tp_schedule.h"
+#include "model/tm/turn_order.h"
+#include "model/tm/treelet_sessions.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
 #include "model/memory/sparse_memory.h"
@@ -53,11 +53,11 @@
 #include "tlm/memory_port.h"
 #include "tlm/payload_pool.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 // What the chip hands every TM: shared state and the guest memory map.
 struct TmEnvironment {
-  const ChipConfig* config = nullptr;
+  const TmSetup* setup = nullptr;
   memory::SparseMemory* backing = nullptr;
   iss::CodeImage* code = nullptr;
   GlobalRegisters* globals = nullptr;
@@ -172,7 +172,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   iss::HookResult execute_stream(const iss::HookCall& call);
 
   TmEnvironment env_;
-  const ChipConfig& config_;
+  const TmSetup& setup_;  // the chip as the TM sees it
   uint32_t tm_id_;
   transport::PayloadPool pool_;  // fast-forward's warming accesses
   // Time against global time, and the TM's own accesses (tlm/memory_port.h).
@@ -223,4 +223,4 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmTrace trace_;  // VCD signals
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

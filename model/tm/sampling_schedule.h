@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/chip/chip_config.h"
+#include "model/tm/timing_config.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 class SamplingSchedule {
  public:
@@ -106,4 +106,4 @@ class SamplingSchedule {
   bool head_ = false, drain_ = false;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -28,7 +28,7 @@
 
 #include "tlm/clock.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 class TurnOrder {
  public:
@@ -101,4 +101,4 @@ class TurnOrder {
   Queue waiting_;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm

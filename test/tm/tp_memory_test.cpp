@@ -1,4 +1,4 @@
-// A TP's memory policy (model/chip/tp_memory.h): the block load the hart uses for a STRaTA op's
+// A TP's memory policy (model/tm/tp_memory.h): the block load the hart uses for a STRaTA op's
 // operands must have exactly the effect of the single-word loads it replaces (data, access
 // record, functional-warming log), and must refuse a block that leaves the TP's memory
 // without touching anything, so the hart's word-by-word fallback finds the faulting word.
@@ -7,12 +7,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/chip/tp_memory.h"
+#include "model/tm/tp_memory.h"
 
 namespace {
 
-using strata::chip::TpMemory;
-using strata::chip::WarmLog;
+using strata::tm::TpMemory;
+using strata::tm::WarmLog;
 using strata::memory::SparseMemory;
 
 constexpr uint32_t kLow = 0x1000;
@@ -30,7 +30,7 @@ void fill(SparseMemory& m) {
 
 struct Effect {
   std::vector<uint32_t> words;
-  strata::chip::AccessRecord record;
+  strata::tm::AccessRecord record;
   std::vector<uint64_t> entries;
 };
 

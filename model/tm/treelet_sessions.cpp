@@ -1,8 +1,8 @@
-#include "model/chip/treelet_sessions.h"
+#include "model/tm/treelet_sessions.h"
 
 #include <string>
 
-namespace strata::chip {
+namespace strata::tm {
 
 using stats::Basis;
 using stats::Unit;
@@ -13,7 +13,7 @@ TreeletSessions::TreeletSessions(uint32_t node_treelets)
              "Treelet sessions (streaming designs; 0 on TRaX): a session is the span a TM works on one treelet buffer, "
              "from an assign that returned another treelet than the TM had (or its first) to the next such change; an "
              "assign that found every buffer empty ends none. Its rays are the pops from the TM's buffer meanwhile, "
-             "its lines the L1 data lines the TM's loads filled meanwhile (model/chip/treelet_sessions.h). Sampled timing "
+             "its lines the L1 data lines the TM's loads filled meanwhile (model/tm/treelet_sessions.h). Sampled timing "
              "counts every session of its execution, fast-forward included; in time order (the default) its schedule is "
              "LT's within a few percent.",
              Basis::kExact) {
@@ -111,4 +111,4 @@ void TreeletSessions::register_stats() {
   g.child(&h);
 }
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -1,13 +1,13 @@
-#include "model/chip/thread_multiprocessor.h"
+#include "model/tm/thread_multiprocessor.h"
 
 #include <cstdio>
 #include <cstring>
 #include <utility>
 
-#include "model/chip/tm_thread_processor.h"
+#include "model/tm/tm_thread_processor.h"
 #include "model/iss/hart_impl.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 using transport::AccessClass;
 using transport::Cycle;
@@ -18,49 +18,49 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
                                            uint32_t tm_id)
     : sc_core::sc_module(name),
       env_(env),
-      config_(*env.config),
+      setup_(*env.setup),
       tm_id_(tm_id),
-      port_(env.config->clock(), env.config->timing.mode, env.config->timing.quantum_cycles, tm_id,
+      port_(env.setup->clock, env.setup->timing.mode, env.setup->timing.quantum_cycles, tm_id,
             [this](Cycle target) { env_.turns->wait_turn(tm_id_, target); }),
-      op_table_(env.config->tm),
-      burst_slack_(env.config->timing.mode == transport::TimingMode::kPrecise ? 0 : env.config->timing.tp_slack_cycles),
-      sync_all_memory_(env.config->timing.mode == transport::TimingMode::kPrecise),
-      sync_shared_(sync_all_memory_ || env.config->timing.sync_shared_ops),
-      xus_(env.config->tm),
-      sampler_(env.config->timing, env.schedule, env.config->global_register_latency_cycles),
+      op_table_(env.setup->tm),
+      burst_slack_(env.setup->timing.mode == transport::TimingMode::kPrecise ? 0 : env.setup->timing.tp_slack_cycles),
+      sync_all_memory_(env.setup->timing.mode == transport::TimingMode::kPrecise),
+      sync_shared_(sync_all_memory_ || env.setup->timing.sync_shared_ops),
+      xus_(env.setup->tm),
+      sampler_(env.setup->timing, env.schedule, env.setup->global_register_latency_cycles),
       instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
       xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
                 stats::Basis::kTimedInstructions),
       sessions_(env.node_treelets) {
   port_.set_data_classes(env.data_classes);
-  while ((1u << fetch_line_shift_) < config_.l1i.line_bytes) ++fetch_line_shift_;
-  warming_ = sampler_.enabled() && config_.timing.functional_warming;
-  ff_time_order_ = sampler_.enabled() && config_.timing.fast_forward_time_order;
-  sampler_.set_op_classes(config_.timing.fast_forward_op_classes);
+  while ((1u << fetch_line_shift_) < setup_.l1i_line_bytes) ++fetch_line_shift_;
+  warming_ = sampler_.enabled() && setup_.timing.functional_warming;
+  ff_time_order_ = sampler_.enabled() && setup_.timing.fast_forward_time_order;
+  sampler_.set_op_classes(setup_.timing.fast_forward_op_classes);
   warm_log_.line_shift = 0;
-  while ((1u << warm_log_.line_shift) < config_.l1d.line_bytes) ++warm_log_.line_shift;
+  while ((1u << warm_log_.line_shift) < setup_.l1d_line_bytes) ++warm_log_.line_shift;
   if (warming_) {
-    warm_log_.known.assign(config_.l1d.size_bytes / config_.l1d.line_bytes, 0);
+    warm_log_.known.assign(setup_.l1d_size_bytes / setup_.l1d_line_bytes, 0);
     // Not cached, so not warmed: the TPs' stacks (local memory) and on-chip path state.
     warm_log_.skip_lo[0] = env.stacks_base;
-    warm_log_.skip_hi[0] = env.stacks_base + uint64_t{config_.threads()} * config_.tp_stack_bytes;
+    warm_log_.skip_hi[0] = env.stacks_base + uint64_t{setup_.threads()} * setup_.tp_stack_bytes;
     if (env.path_state_on_chip) {
       warm_log_.skip_lo[1] = env.path_begin;
       warm_log_.skip_hi[1] = env.path_end;
     }
   }
-  if (config_.rtl_pipelines(tm_id)) {
+  if (setup_.rtl_pipelines.at(tm_id)) {
     if (env.pipeline_backend == nullptr || !*env.pipeline_backend)
-      throw ConfigError("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
+      throw std::runtime_error("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
     FusedBackendSetup setup;
     setup.tm = tm_id;
     setup.cycle = [this] { return current_ != nullptr ? current_->timing.next_issue() : port_.global_cycle(); };
     pipeline_backend_ = (*env.pipeline_backend)(setup);
-    if (!pipeline_backend_) throw ConfigError("tm.pipeline_impl: rtl, but no RTL pipeline backend was made for TM " +
+    if (!pipeline_backend_) throw std::runtime_error("tm.pipeline_impl: rtl, but no RTL pipeline backend was made for TM " +
                                               std::to_string(tm_id));
   }
-  for (uint32_t tp = 0; tp < config_.tps_per_tm; ++tp) {
-    const uint32_t thread = tm_id * config_.tps_per_tm + tp;
+  for (uint32_t tp = 0; tp < setup_.tps_per_tm; ++tp) {
+    const uint32_t thread = tm_id * setup_.tps_per_tm + tp;
     tps_.push_back(std::make_unique<Tp>(*env.code, *env.backing, env, this, thread, tp, tm_id, op_table_));
     Tp& t = *tps_.back();
     t.hart.reset(env.entry_pc);
@@ -97,7 +97,7 @@ iss::Counters ThreadMultiprocessor::iss_counters() const {
 void ThreadMultiprocessor::fail(const Tp& tp, const std::string& what) {
   char where[96];
   std::snprintf(where, sizeof where, "TM %u, TP %u (thread %u), pc 0x%08x: ", tm_id_,
-                tp.thread_id % config_.tps_per_tm, tp.thread_id, tp.hart.pc());
+                tp.thread_id % setup_.tps_per_tm, tp.thread_id, tp.hart.pc());
   error_ = where + what;
   sc_core::sc_stop();
 }
@@ -156,7 +156,7 @@ void ThreadMultiprocessor::run() {
         // global-register ops wait for their dates, or stop it when dated past `others`
         // (timing.fast_forward_time_order, tm_fast_forward.cpp).
         const Cycle next_window = sampler_.next_window(window);
-        const Cycle ahead = Cycle{config_.timing.fast_forward_batch_quanta} * config_.timing.quantum_cycles;
+        const Cycle ahead = Cycle{setup_.timing.fast_forward_batch_quanta} * setup_.timing.quantum_cycles;
         const Cycle ff_until = others == TpSchedule::kDone ? next_window : std::min(next_window, others + ahead);
         ff_others_ = others;
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
@@ -242,10 +242,10 @@ Cycle ThreadMultiprocessor::fetch(Tp& tp, uint32_t pc) {
 
 Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
   const AccessRecord& r = tp.memory.record();
-  const uint32_t stacks_end = env_.stacks_base + config_.threads() * config_.tp_stack_bytes;
+  const uint32_t stacks_end = env_.stacks_base + setup_.threads() * setup_.tp_stack_bytes;
   if (r.first >= env_.stacks_base && r.first < stacks_end) {
     if (r.first < tp.stack_lo || r.last > tp.stack_hi) {
-      fail(tp, "stack access outside this TP's " + std::to_string(config_.tp_stack_bytes) +
+      fail(tp, "stack access outside this TP's " + std::to_string(setup_.tp_stack_bytes) +
                    "-byte local memory (stack overflow? raise tp_stack_bytes)");
       return at;
     }
@@ -267,7 +267,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
   // One request per cache line touched (a pipeline operand may straddle two lines); they
   // issue together and the access completes with the last of them.
   l1_timed_since_warming_ = true;
-  const uint32_t line = config_.l1d.line_bytes;
+  const uint32_t line = setup_.l1d_line_bytes;
   uint8_t scratch[256];
   Cycle ready = at;
   for (uint32_t a = r.first; a < r.last && error_.empty();) {
@@ -276,7 +276,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
     if (counting()) ++counters_.l1_requests;
     ready = std::max(ready, transact(data_port, r.store ? AccessClass::kDataStore : AccessClass::kDataLoad, a,
                                      scratch, bytes, at, true, transport::kNoTreelet, tp));
-    if (config_.design.streams && counting()) sessions_.answered(port_.answer().served_by);  // as the L1 counts fills
+    if (setup_.streams && counting()) sessions_.answered(port_.answer().served_by);  // as the L1 counts fills
     a += bytes;
   }
   return ready;
@@ -342,14 +342,14 @@ bool ThreadMultiprocessor::step(Tp& tp) {
 iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
   iss::HookResult result;
   Tp& tp = *current_;
-  const uint32_t tp_index = tp.thread_id % config_.tps_per_tm;
+  const uint32_t tp_index = tp.thread_id % setup_.tps_per_tm;
   switch (call.op) {
     case iss::Op::kStThreadId: result.dest[0] = tp.thread_id; return result;
     case iss::Op::kStTpId: result.dest[0] = tp_index; return result;
     case iss::Op::kStTmId: result.dest[0] = tm_id_; return result;
-    case iss::Op::kStThreadCount: result.dest[0] = config_.threads(); return result;
-    case iss::Op::kStTpsPerTm: result.dest[0] = config_.tps_per_tm; return result;
-    case iss::Op::kStTmCount: result.dest[0] = config_.tms; return result;
+    case iss::Op::kStThreadCount: result.dest[0] = setup_.threads(); return result;
+    case iss::Op::kStTpsPerTm: result.dest[0] = setup_.tps_per_tm; return result;
+    case iss::Op::kStTmCount: result.dest[0] = setup_.tms; return result;
     case iss::Op::kStAtomicInc:
     case iss::Op::kStAtomicAdd:
     case iss::Op::kStGlobalRead:
@@ -369,7 +369,7 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
       op_class_ = TmSampler::kGlobal;
       if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
       hook_timed_ = true;
-      hook_ready_ = request_cycle_ + config_.global_register_latency_cycles;
+      hook_ready_ = request_cycle_ + setup_.global_register_latency_cycles;
       return result;
     }
     case iss::Op::kStStreamCapacity:
@@ -385,7 +385,7 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
 iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) {
   iss::HookResult result;
   Tp& tp = *current_;
-  if (!config_.design.streams) {
+  if (!setup_.streams) {
     result.status = iss::HookStatus::kIllegal;
     result.message = "stream memory operations need a design with streams (design.streams)";
     return result;
@@ -450,8 +450,8 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
   return result;
 }
 
-}  // namespace strata::chip
+}  // namespace strata::tm
 
 namespace strata::iss {
-template class Hart<strata::chip::TpMemory>;
+template class Hart<strata::tm::TpMemory>;
 }

@@ -2,10 +2,10 @@
 // begins and ends, which kind it is, where its lines came from, and the histogram's buckets.
 #include <gtest/gtest.h>
 
-#include "model/chip/treelet_sessions.h"
+#include "model/tm/treelet_sessions.h"
 #include "model/stats/stat_values.h"
 
-namespace strata::chip {
+namespace strata::tm {
 namespace {
 
 using transport::kNoTreelet;
@@ -84,4 +84,4 @@ TEST(TreeletSessionStats, ASessionRunsFromOneTreeletToTheNext) {
 }
 
 }  // namespace
-}  // namespace strata::chip
+}  // namespace strata::tm

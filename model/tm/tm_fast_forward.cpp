@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "model/chip/tm_thread_processor.h"
+#include "model/tm/tm_thread_processor.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 using transport::AccessClass;
 using transport::Cycle;
@@ -106,4 +106,4 @@ iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   return result;
 }
 
-}  // namespace strata::chip
+}  // namespace strata::tm

@@ -13,7 +13,7 @@
 #include "model/memory/window_trace.h"
 #include "tlm/memory_extension.h"
 
-namespace strata::chip {
+namespace strata::tm {
 
 class TmTrace {
  public:
@@ -46,4 +46,4 @@ class TmTrace {
   std::size_t mode_, instructions_, box_, triangle_, treelet_;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::tm
