@@ -11,7 +11,7 @@
 //   kPrecise:     whenever t is ahead, so every request reaches its target in time order.
 // Never past `others` (a TM's other TPs, whose requests every calendar would move to global
 // time if it overtook them). How the thread waits is its owner's (`WaitUntil`): the chip's TMs
-// take turns (model/tm/turn_order.h), a stand-alone initiator waits on the kernel.
+// take turns (tlm/turn_order.h), a stand-alone initiator waits on the kernel.
 //
 // Accesses. A request carries its cycle as annotated delay against global time as of the last
 // wait, and the target answers with the completion in the same delay. One payload and

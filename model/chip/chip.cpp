@@ -119,7 +119,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   }
   register_stats();
   if (config_.timing.mode == transport::TimingMode::kSampled)
-    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_, *schedule_, stats_, *turns_, WindowSampler::Progress{
+    sampler_ = std::make_unique<WindowSampler>("window_sampler", config_.timing, config_.tms, *schedule_, stats_, *turns_, WindowSampler::Progress{
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
         [this] { return uint64_t{cycles()}; },
         [this] {  // every work item handed out: the frame's drain has begun

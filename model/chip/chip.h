@@ -17,7 +17,7 @@
 #include "model/tm/global_registers.h"
 #include "model/chip/guest_layout.h"
 #include "model/tm/thread_multiprocessor.h"
-#include "model/chip/window_sampler.h"
+#include "model/sampling/window_sampler.h"
 #include "model/iss/code_image.h"
 #include "model/iss/elf_loader.h"
 #include "model/memory/interconnect.h"
@@ -34,11 +34,12 @@ namespace strata::chip {
 using tm::FusedBackendFactory;
 using tm::FusedBackendSetup;
 using tm::GlobalRegisters;
-using tm::SamplingSchedule;
+using sampling::SamplingSchedule;
+using sampling::WindowSampler;
 using tm::ThreadMultiprocessor;
 using tm::TmCounters;
 using tm::TmEnvironment;
-using tm::TurnOrder;
+using transport::TurnOrder;
 
 // What one frame needs besides the chip: the kernel, the scene image and the frame setup.
 struct FrameInputs {

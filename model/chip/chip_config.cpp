@@ -121,23 +121,6 @@ const char* path_state_name(PathStatePlacement p) {
   return "?";
 }
 
-std::vector<std::string> sample_target_list(const std::string& list) {
-  const std::string field = "timing.sample_target_stats";
-  std::vector<std::string> out;
-  for (size_t from = 0; from <= list.size();) {
-    size_t comma = list.find(',', from);
-    if (comma == std::string::npos) comma = list.size();
-    std::string name = list.substr(from, comma - from);
-    from = comma + 1;
-    name.erase(0, name.find_first_not_of(' '));
-    name.erase(name.find_last_not_of(' ') + 1);
-    require(!name.empty(), field + ": an empty entry in \"" + list +
-                               "\" (expected comma-separated statistics, e.g. frame.cycles,memory.dram.bytes)");
-    require(std::find(out.begin(), out.end(), name) == out.end(), field + ": \"" + name + "\" is named twice");
-    out.push_back(std::move(name));
-  }
-  return out;
-}
 
 std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   const TimingConfig d;
@@ -297,7 +280,11 @@ void ChipConfig::finalize() {
               (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
               real(timing.sample_target_error));
-  sample_target_list(timing.sample_target_stats);  // its syntax; the names are checked against the tree
+  try {  // its syntax; the names are checked against the tree when the sampler is built
+    (void)sampling::sample_target_list(timing.sample_target_stats);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(e.what());
+  }
   require(timing.sample_head_periods <= 1000,
           "timing.sample_head_periods: 0 (no head) to 1000 periods, got " + std::to_string(timing.sample_head_periods));
   require(timing.sample_drain_share >= 0.0 && timing.sample_drain_share <= 0.5,

@@ -12,7 +12,7 @@
 #include "model/chip/config_binder.h"
 #include "model/memory/config.h"
 #include "model/stats/interval_method.h"
-#include "model/tm/timing_config.h"
+#include "model/sampling/timing_config.h"
 #include "model/tm/tm_config.h"
 #include "tlm/clock.h"
 #include "tlm/timing_mode.h"
@@ -41,9 +41,6 @@ enum class PathStatePlacement : uint8_t {
 // the chip must supply (FrameInputs::pipeline_backend).
 enum class PipelineImpl : uint8_t { kModel, kRtl };
 
-// timing.sample_target_stats's entries, trimmed; an empty or a repeated entry throws
-// ConfigError naming the field (the window sampler checks the names against the tree).
-std::vector<std::string> sample_target_list(const std::string& list);
 
 // The config's name of a placement: "compact", "on-chip" or "dram".
 const char* path_state_name(PathStatePlacement p);
@@ -55,7 +52,7 @@ struct DesignConfig {
   PathStatePlacement path_state = PathStatePlacement::kCompact;  // streaming designs only
 };
 
-using tm::TimingConfig;  // model/tm/timing_config.h
+using sampling::TimingConfig;  // model/sampling/timing_config.h
 // The sampled-timing fields (timing.sample_*, functional_warming, fast_forward_batch_quanta) whose
 // value differs from the built-in default: in LT or precise mode they do nothing, and the run
 // warns that they were set.

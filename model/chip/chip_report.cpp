@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "model/chip/guest_layout.h"
-#include "model/chip/sampling_factors.h"
+#include "model/sampling/sampling_factors.h"
 
 namespace strata::chip {
 namespace {
@@ -94,12 +94,12 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
   // Sampled timing: the windows of a sparser stretch count for more, and the strata timed in
   // full (the frame's head and drain) are estimated by their own ratios.
   if (!has_intervals()) {
-    values_.scale(extrapolation_factors(values_));  // 1 outside sampled timing
+    values_.scale(sampling::extrapolation_factors(values_));  // 1 outside sampled timing
   } else {
     const stats::BatchMeans& b = *chip.window_batches();
     const stats::Values middle = b.weighted_total(raw);
     simulated_cycles_ = raw.number("frame.cycles");
-    values_ = SampledEstimate(middle, b.strata(raw), simulated_cycles_).scaled(middle);
+    values_ = sampling::SampledEstimate(middle, b.strata(raw), simulated_cycles_).scaled(middle);
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
       return path.compare(0, 9, "sampling.") == 0;
@@ -120,7 +120,7 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   // A replicate's frame time is the simulated one scaled by the change in the samples' frame
   // time, so the rates (frames/s, GB/s) and static energies vary with it as they would.
   const bool stratified = !b.strata(raw).empty();
-  const SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
+  const sampling::SampledEstimate estimate(b.weighted_total(raw), b.strata(raw), raw.number("frame.cycles"));
   std::vector<std::string> paths;
   raw.visit([&](const std::string& path, const stats::Values::Stat&) { paths.push_back(path); });
   const auto measure = [&](stats::Values r) {
@@ -160,7 +160,7 @@ void FrameReport::estimate_intervals(const stats::Values& raw) {
   // interval can be traced to the batches that make it.
   std::vector<std::string> shown = {"frame.cycles", "memory.dram.bytes", "memory.l2.accesses"};
   if (chip_.config().timing.sample_target_error > 0)
-    for (const std::string& t : sample_target_list(chip_.config().timing.sample_target_stats))
+    for (const std::string& t : sampling::sample_target_list(chip_.config().timing.sample_target_stats))
       if (std::find(shown.begin(), shown.end(), t) == shown.end()) shown.push_back(t);
   for (size_t i = 0; i < paths.size(); ++i)
     if (std::find(shown.begin(), shown.end(), paths[i]) != shown.end()) replicates_[paths[i]] = replicates[i];
@@ -211,7 +211,7 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
     if (cfg.timing.sample_target_error > 0) {
       // Each named statistic's interval against the target (-1: no interval was given).
       nlohmann::json t = {{"error", cfg.timing.sample_target_error}, {"stats", nlohmann::json::object()}};
-      for (const std::string& path : sample_target_list(cfg.timing.sample_target_stats)) {
+      for (const std::string& path : sampling::sample_target_list(cfg.timing.sample_target_stats)) {
         const double got = target_reached(path);
         t["stats"][path] = {{"relative", got}, {"met", got >= 0 && got <= cfg.timing.sample_target_error}};
       }
@@ -404,7 +404,7 @@ std::string FrameReport::target_lines() const {
   const double target = cfg.timing.sample_target_error;
   const auto label = [](const std::string& path) { return path == "frame.cycles" ? std::string("frame cycles") : path; };
   std::string s, missed;
-  for (const std::string& path : sample_target_list(cfg.timing.sample_target_stats)) {
+  for (const std::string& path : sampling::sample_target_list(cfg.timing.sample_target_stats)) {
     const double got = target_reached(path);
     if (got >= 0 && got <= target)
       s += format("target         %s \u00b1 %.1f%% asked, \u00b1 %.2f%% reached [sampled]\n", label(path).c_str(),

@@ -12,7 +12,7 @@
 #include <algorithm>
 
 #include "model/chip/chip.h"
-#include "model/chip/sampling_factors.h"
+#include "model/sampling/sampling_factors.h"
 #include "model/stats/stat_values.h"
 
 namespace strata::chip {
@@ -142,7 +142,7 @@ void Chip::register_stats() {
               },
               true);
     const auto factor = [](Basis b) {
-      return [b](const Scope& x) { return extrapolation_factors(x.root())[b]; };
+      return [b](const Scope& x) { return sampling::extrapolation_factors(x.root())[b]; };
     };
     s.derived("extrapolation_factor", Unit::kRatio, "Instructions retired / timed: XU and stall counts.",
               factor(Basis::kTimedInstructions));

@@ -366,7 +366,7 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
       if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
       ++env_.globals->operations;
       ++counters_.global_register_ops;
-      op_class_ = TmSampler::kGlobal;
+      op_class_ = sampling::TmSampler::kGlobal;
       if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
       hook_timed_ = true;
       hook_ready_ = request_cycle_ + setup_.global_register_latency_cycles;
@@ -408,7 +408,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
     ++counters_.stream_moves_all;
     if (counting()) ++counters_.stream_moves;
   }
-  op_class_ = TmSampler::kOtherOp;
+  op_class_ = sampling::TmSampler::kOtherOp;
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
       hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,
@@ -422,14 +422,14 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
                              call.rs2, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
-      op_class_ = result.dest[0] ? TmSampler::kPushStored : TmSampler::kPushFull;
+      op_class_ = result.dest[0] ? sampling::TmSampler::kPushStored : sampling::TmSampler::kPushFull;
       break;
     case iss::Op::kStStreamPop:
     case iss::Op::kStStreamPop64:
       hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, request_cycle_, false,
                              transport::kNoTreelet, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
-      op_class_ = result.dest[0] ? TmSampler::kPopRay : TmSampler::kPopEmpty;
+      op_class_ = result.dest[0] ? sampling::TmSampler::kPopRay : sampling::TmSampler::kPopEmpty;
       if (result.dest[0]) {
         std::memcpy(call.out, scratch, ray_bytes);
         result.status = iss::HookStatus::kStore;
@@ -441,7 +441,7 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
                              transport::kNoTreelet, tp);
       result.dest[0] = ext.result;
       sessions_.assigned(ext.result);
-      op_class_ = ext.result == transport::kNoTreelet ? TmSampler::kAssignNone : TmSampler::kAssignFound;
+      op_class_ = ext.result == transport::kNoTreelet ? sampling::TmSampler::kAssignNone : sampling::TmSampler::kAssignFound;
       trace_.treelet(ext.result, port_.global_cycle());
       break;
   }

@@ -35,12 +35,12 @@
 
 #include "model/tm/fused_backend_factory.h"
 #include "model/tm/global_registers.h"
-#include "model/tm/tm_sampler.h"
+#include "model/sampling/tm_sampler.h"
 #include "model/tm/tm_setup.h"
 #include "model/tm/tm_trace.h"
 #include "model/tm/tp_memory.h"
 #include "model/tm/tp_schedule.h"
-#include "model/tm/turn_order.h"
+#include "tlm/turn_order.h"
 #include "model/tm/treelet_sessions.h"
 #include "model/iss/functional_strata_hook.h"
 #include "model/iss/hart.h"
@@ -72,7 +72,7 @@ struct TmEnvironment {
   uint32_t stream_ray_bytes = 48;  // one stream entry's ray: 48, or 64 with the compact path state
   uint64_t path_begin = 0, path_end = 0;
   // Sampled timing: where the detailed windows fall (null in the other modes).
-  const SamplingSchedule* schedule = nullptr;
+  const sampling::SamplingSchedule* schedule = nullptr;
   // The cycle statistics are taken at (the frame's end): the XUs count each mode's cycles up to it.
   const transport::Cycle* report_cycle = nullptr;
   // tm.pipeline_impl=rtl: makes the backend of each TM that uses it (null otherwise).
@@ -80,7 +80,7 @@ struct TmEnvironment {
   // Treelets [0, node_treelets) hold BVH nodes, the rest triangles (the scene header's count).
   uint32_t node_treelets = 0;
   // The order the TMs run in against global time (turn_order.h); TM i takes turns as id i.
-  TurnOrder* turns = nullptr;
+  transport::TurnOrder* turns = nullptr;
 };
 
 struct TmCounters {
@@ -193,7 +193,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   uint32_t live_tps_ = 0;              // TPs that have not halted
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 
-  TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
+  sampling::TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
   WarmLog warm_log_;   // the current fast-forward batch's L1 lines (functional warming)
   bool warming_ = false;
   bool l1_timed_since_warming_ = true;  // a timed access changed the L1: warm_log_.forget()

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/tm/timing_config.h"
+#include "model/sampling/timing_config.h"
 #include "model/tm/tm_config.h"
 #include "tlm/clock.h"
 
@@ -22,7 +22,7 @@ struct TmSetup {
   bool streams = false;  // the design has the ray stream memory (stream ops are legal)
   uint32_t global_register_latency_cycles = 4;
   TmConfig tm;
-  TimingConfig timing;
+  sampling::TimingConfig timing;
   transport::Clock clock;
   std::vector<bool> rtl_pipelines;  // per TM: tm.pipeline_impl=rtl computes its fused tests
 

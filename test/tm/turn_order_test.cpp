@@ -1,4 +1,4 @@
-// TurnOrder (model/tm/turn_order.h): participants resuming at one cycle run in a fixed
+// TurnOrder (tlm/turn_order.h): participants resuming at one cycle run in a fixed
 // round-robin order, the window sampler's id last, whatever other processes with timed waits
 // the kernel has (issue 39, F2: the progress monitor's wake-ups reordered the TMs).
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 
 #include <systemc>
 
-#include "model/tm/turn_order.h"
+#include "tlm/turn_order.h"
 
-namespace strata::tm {
+namespace strata::transport {
 namespace {
 
 using Log = std::vector<std::pair<uint32_t, uint64_t>>;  // (id, global cycle when it ran)
@@ -66,4 +66,4 @@ TEST(TurnOrder, TiesGoRoundRobinAmongTheTmsAndTheSamplerLastWhateverElseWakes) {
 }
 
 }  // namespace
-}  // namespace strata::tm
+}  // namespace strata::transport

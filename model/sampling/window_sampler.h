@@ -17,16 +17,15 @@
 #include <vector>
 #include <systemc>
 
-#include "model/chip/chip_config.h"
-#include "model/tm/sampling_schedule.h"
-#include "model/tm/turn_order.h"
+#include "model/sampling/sampling_schedule.h"
+#include "model/sampling/timing_config.h"
 #include "model/stats/batch_means.h"
 #include "model/stats/stat_group.h"
+#include "tlm/turn_order.h"
 
-namespace strata::chip {
+namespace strata::sampling {
 
-using tm::SamplingSchedule;
-using tm::TurnOrder;
+using transport::TurnOrder;
 
 class WindowSampler : public sc_core::sc_module {
  public:
@@ -40,7 +39,8 @@ class WindowSampler : public sc_core::sc_module {
     std::function<bool()> handed_out;  // every pixel has been handed out to a path
   };
   SC_HAS_PROCESS(WindowSampler);
-  WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
+  // `turn`: its id in the turn order (after the TMs', which run first at the same cycle).
+  WindowSampler(sc_core::sc_module_name name, const TimingConfig& timing, uint32_t turn, SamplingSchedule& schedule,
                 const stats::Group& root, TurnOrder& turns, Progress progress);
   const stats::BatchMeans& batches() const { return batches_; }
 
@@ -51,7 +51,7 @@ class WindowSampler : public sc_core::sc_module {
   // comma-separated list of dotted paths). Each must be an extrapolated count or a formula over
   // counts (bytes, cycles, energy); frame.cycles stands for the samples' frame time. Throws
   // std::invalid_argument naming the field and the entry otherwise.
-  static std::vector<std::string> target_stats(const ChipConfig& config, const stats::Values& tree);
+  static std::vector<std::string> target_stats(const TimingConfig& timing, const stats::Values& tree);
   const std::vector<std::string>& targets() const { return targets_; }
 
   // The shortest period the schedule may take: the detailed window, and on each side of the
@@ -106,7 +106,8 @@ class WindowSampler : public sc_core::sc_module {
   // measured cycles).
   std::vector<double> target_counts(const stats::Values& cumulative) const;
 
-  const ChipConfig& config_;
+  const TimingConfig& timing_;
+  uint32_t turn_;
   SamplingSchedule& schedule_;
   const stats::Group& root_;
   TurnOrder& turns_;  // it wakes in turn with the TMs, after those at the same cycle
@@ -120,4 +121,4 @@ class WindowSampler : public sc_core::sc_module {
   double head_weight_ = 0;    // the head's span, in configured periods (0: no head)
 };
 
-}  // namespace strata::chip
+}  // namespace strata::sampling

@@ -1,33 +1,34 @@
-#include "model/chip/window_sampler.h"
+#include "model/sampling/window_sampler.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "model/chip/sampling_factors.h"
+#include "model/sampling/sampling_factors.h"
 
-namespace strata::chip {
+namespace strata::sampling {
 
-WindowSampler::WindowSampler(sc_core::sc_module_name name, const ChipConfig& config, SamplingSchedule& schedule,
-                             const stats::Group& root, TurnOrder& turns, Progress progress)
+WindowSampler::WindowSampler(sc_core::sc_module_name name, const TimingConfig& timing, uint32_t turn,
+                             SamplingSchedule& schedule, const stats::Group& root, TurnOrder& turns, Progress progress)
     : sc_core::sc_module(name),
-      config_(config),
+      timing_(timing),
+      turn_(turn),
       schedule_(schedule),
       root_(root),
       turns_(turns),
       progress_(std::move(progress)),
-      batches_(&WindowSampler::measured, 32, config.timing.sample_interval) {
+      batches_(&WindowSampler::measured, 32, timing.sample_interval) {
   // Checked when the chip is built, so a misspelt name stops the run before it starts.
-  targets_ = target_stats(config_, stats::Values::snapshot(root_));
+  targets_ = target_stats(timing_, stats::Values::snapshot(root_));
   windows_.resize(targets_.size());
   last_counts_.assign(targets_.size(), 0.0);
   SC_THREAD(run);
 }
 
-std::vector<std::string> WindowSampler::target_stats(const ChipConfig& config, const stats::Values& tree) {
+std::vector<std::string> WindowSampler::target_stats(const TimingConfig& timing, const stats::Values& tree) {
   const std::string field = "timing.sample_target_stats";
-  std::vector<std::string> names = sample_target_list(config.timing.sample_target_stats);
+  std::vector<std::string> names = sample_target_list(timing.sample_target_stats);
   for (const std::string& name : names) {
     if (name == "frame.cycles") continue;  // the samples' frame time (sampled_model_cycles)
     const auto fail = [&](const std::string& why) {
@@ -57,7 +58,7 @@ bool WindowSampler::measured(const std::string& path, const stats::Values::Stat&
   return s.basis != stats::Basis::kExact || path.compare(0, 9, "sampling.") == 0;
 }
 
-uint64_t WindowSampler::min_period() const { return min_period(config_.timing); }
+uint64_t WindowSampler::min_period() const { return min_period(timing_); }
 
 uint64_t WindowSampler::min_period(const TimingConfig& t) {
   // When the sampler wakes, halfway through the fast-forward, no TM may have begun the next
@@ -83,11 +84,11 @@ void WindowSampler::plan_head(const TimingConfig& t, SamplingSchedule& schedule)
 // a long stretch of the frame unsampled.
 uint64_t WindowSampler::max_period(double frame_cycles) const {
   const double spread = std::max(0.0, frame_cycles) / kMinWindows;
-  return std::max<uint64_t>(config_.timing.sample_period_cycles, static_cast<uint64_t>(spread));
+  return std::max<uint64_t>(timing_.sample_period_cycles, static_cast<uint64_t>(spread));
 }
 
 void WindowSampler::run() {
-  const uint32_t id = config_.tms;  // after the TMs' turns at the same cycle
+  const uint32_t id = turn_;  // after the TMs' turns at the same cycle
   for (uint64_t window = 0;; window = schedule_.next_window(window)) {
     if (schedule_.timed_in_full(window)) return finish_drain(id, window);
     // Halfway through the fast-forward: TMs run at most a few quanta ahead of global time
@@ -112,7 +113,7 @@ void WindowSampler::run() {
         // frame's counts to a few or none (0% L1 hit rate, 0 L2 accesses; issue 39, F1).
         batches_.set_tail_weight(batches_.windows() == 0
                                      ? 1.0
-                                     : tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+                                     : tail_weight(schedule_, progress_.end(), timing_.sample_period_cycles));
       }
       turns_.leave();
       return;
@@ -123,14 +124,14 @@ void WindowSampler::run() {
       // The head is a stratum of its own: counted whole, in no batch, not a window the error
       // target's plan draws its spread from. It stands for its period in the plan's coverage.
       batches_.add_head_stratum(cumulative);
-      head_weight_ = double(period) / double(config_.timing.sample_period_cycles);
+      head_weight_ = double(period) / double(timing_.sample_period_cycles);
       last_counts_ = target_counts(cumulative);
     } else {
       // A window stands for its period of the frame: weighted against the first period.
-      const double weight = double(period) / double(config_.timing.sample_period_cycles);
+      const double weight = double(period) / double(timing_.sample_period_cycles);
       batches_.add_window(cumulative, weight);
       weight_sum_ += weight;
-      if (config_.timing.sample_target_error > 0) {
+      if (timing_.sample_target_error > 0) {
         const std::vector<double> counts = target_counts(cumulative);
         for (size_t k = 0; k < targets_.size(); ++k)
           windows_[k].push_back({weight, counts[k] - last_counts_[k], instructions - last_measured_});
@@ -142,13 +143,13 @@ void WindowSampler::run() {
     // An error target's pilot runs at the shortest period: at the configured one, its windows
     // weighed 4.5 times those of the period the plan then chose, and the first batch moved
     // STRaTA's DRAM estimate by 4.2% at 512x512 where a middle batch moves it by under 1%.
-    if (config_.timing.sample_target_error > 0 && batches_.windows() == (schedule_.has_head() ? 0u : 1u))
+    if (timing_.sample_target_error > 0 && batches_.windows() == (schedule_.has_head() ? 0u : 1u))
       schedule_.change_period(schedule_.next_window(window),
-                              std::min<uint64_t>(min_period(), config_.timing.sample_period_cycles));
+                              std::min<uint64_t>(min_period(), timing_.sample_period_cycles));
     // The drain: once every pixel has been handed out (the rays in flight fall from then on)
     // and the pixels left to finish are at most the configured share, the rest of the frame is
     // one window timed in full (it replaces any period the plan just set).
-    const double share = config_.timing.sample_drain_share;
+    const double share = timing_.sample_drain_share;
     if (share > 0 && progress_.handed_out() && 1.0 - progress_.fraction() <= share)
       schedule_.time_in_full(schedule_.next_window(window));
   }
@@ -158,7 +159,7 @@ void WindowSampler::finish_drain(uint32_t id, uint64_t from) {
   // Every TM is timed from `from` to the frame's end: wake once a configured period to see
   // whether it has ended (no snapshot is taken on the way).
   for (uint64_t at = from;;) {
-    at += config_.timing.sample_period_cycles;
+    at += timing_.sample_period_cycles;
     turns_.wait_turn(id, at);
     if (progress_.done()) break;
   }
@@ -169,7 +170,7 @@ void WindowSampler::finish_drain(uint32_t id, uint64_t from) {
   // instead that the middle was too short for an interval.)
   const double measured = stats::Values::snapshot(root_).number("sampling.measured_instructions");
   if (measured > last_measured_) batches_.set_tail_stratum(true);
-  else batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), config_.timing.sample_period_cycles));
+  else batches_.set_tail_weight(tail_weight(schedule_, progress_.end(), timing_.sample_period_cycles));
   turns_.leave();
 }
 
@@ -285,8 +286,8 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
   // Planned to a little inside the target: the half-width so far is itself an estimate, from
   // at most 32 batches (a relative standard error of about 1 / sqrt(2 x 31) = 13%), and a plan
   // that aims at the target exactly misses it about half the time.
-  const double target = kPlanningMargin * config_.timing.sample_target_error;
-  const double base = double(config_.timing.sample_period_cycles);
+  const double target = kPlanningMargin * timing_.sample_target_error;
+  const double base = double(timing_.sample_period_cycles);
   const double frame = double(now) / std::min(1.0, fraction);
   const double remaining_cycles = std::max(0.0, frame - double(now));
   const double remaining = remaining_cycles / base;
@@ -295,7 +296,7 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
     if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
     const double gain = target * (frame / base) / (relative[k] * (head_weight_ + weight_sum_));
     const double weight =
-        remaining > 0 ? spread_weight(windows_[k], kRecentWindows, config_.timing.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
+        remaining > 0 ? spread_weight(windows_[k], kRecentWindows, timing_.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
     chosen = std::min(chosen, std::max(0.0, weight) * base);
   }
   if (!std::isfinite(chosen)) return;
@@ -306,7 +307,7 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
   const uint64_t current = schedule_.window_of(now);
   schedule_.change_period(schedule_.next_window(current), period);
   // Until the frame ends (run() then weighs the tail by what is left of the frame).
-  batches_.set_tail_weight(double(period) / double(config_.timing.sample_period_cycles));
+  batches_.set_tail_weight(double(period) / double(timing_.sample_period_cycles));
 }
 
-}  // namespace strata::chip
+}  // namespace strata::sampling

@@ -4,11 +4,11 @@
 
 #include <vector>
 
-#include "model/chip/window_sampler.h"
+#include "model/sampling/window_sampler.h"
 
 namespace {
 
-using strata::chip::WindowSampler;
+using strata::sampling::WindowSampler;
 using Window = WindowSampler::Window;
 
 // Windows of `instructions` each whose cycles lie `residual` above and below the common ratio
@@ -84,8 +84,8 @@ namespace {
 
 // The window the frame ends in stands for the cycles from its start to the frame's end.
 TEST(WindowSampler, TheTailWindowStandsForWhatIsLeftOfTheFrame) {
-  strata::chip::TimingConfig t;  // period 100,000 cycles
-  strata::chip::SamplingSchedule schedule(t);
+  strata::sampling::TimingConfig t;  // period 100,000 cycles
+  strata::sampling::SamplingSchedule schedule(t);
   EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 250000, t.sample_period_cycles), 0.5);
   EXPECT_DOUBLE_EQ(WindowSampler::tail_weight(schedule, 299999, t.sample_period_cycles), 0.99999);
   schedule.change_period(300000, 1200000);  // the error target thinned the windows out
@@ -102,8 +102,8 @@ namespace {
 // detailed and measured from cycle 0 with no warm-up, the drain from its window on until the
 // frame ends; the measured cycles count both.
 TEST(SamplingScheduleStrata, TheHeadAndTheDrainAreWindowsTimedInFull) {
-  strata::chip::TimingConfig t;  // period 100,000, detail 20,000, warm-up 8,000
-  strata::chip::SamplingSchedule s(t);
+  strata::sampling::TimingConfig t;  // period 100,000, detail 20,000, warm-up 8,000
+  strata::sampling::SamplingSchedule s(t);
   WindowSampler::plan_head(t, s);  // 4 periods by default
   const uint64_t head = 4 * 100000, gap = WindowSampler::min_period(t) - t.sample_detail_cycles;
   ASSERT_TRUE(s.has_head());
@@ -134,9 +134,9 @@ TEST(SamplingScheduleStrata, TheHeadAndTheDrainAreWindowsTimedInFull) {
   EXPECT_EQ(s.measured_cycles_before(drain + 8000), before);  // its warm-up
   EXPECT_EQ(s.measured_cycles_before(drain + 1008000), before + 1000000);
 
-  strata::chip::TimingConfig none;
+  strata::sampling::TimingConfig none;
   none.sample_head_periods = 0;
-  strata::chip::SamplingSchedule plain(none);
+  strata::sampling::SamplingSchedule plain(none);
   WindowSampler::plan_head(none, plain);
   EXPECT_FALSE(plain.has_head());
   EXPECT_EQ(plain.warmup_at(0), 8000u);

@@ -8,11 +8,11 @@
 #include <array>
 #include <cstdint>
 
-#include "model/tm/timing_config.h"
-#include "model/tm/sampling_schedule.h"
+#include "model/sampling/timing_config.h"
+#include "model/sampling/sampling_schedule.h"
 #include "tlm/clock.h"
 
-namespace strata::tm {
+namespace strata::sampling {
 
 class TmSampler {
  public:
@@ -150,4 +150,4 @@ class TmSampler {
   std::array<double, kOpClasses> class_cycles_ = filled(1.0);  // as wait_cycles_ until measured
 };
 
-}  // namespace strata::tm
+}  // namespace strata::sampling

@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/tm/timing_config.h"
+#include "model/sampling/timing_config.h"
 
-namespace strata::tm {
+namespace strata::sampling {
 
 class SamplingSchedule {
  public:
@@ -106,4 +106,4 @@ class SamplingSchedule {
   bool head_ = false, drain_ = false;
 };
 
-}  // namespace strata::tm
+}  // namespace strata::sampling

@@ -28,7 +28,7 @@
 
 #include "tlm/clock.h"
 
-namespace strata::tm {
+namespace strata::transport {
 
 class TurnOrder {
  public:
@@ -101,4 +101,4 @@ class TurnOrder {
   Queue waiting_;
 };
 
-}  // namespace strata::tm
+}  // namespace strata::transport

@@ -7,7 +7,7 @@
 
 #include "model/stats/stat_values.h"
 
-namespace strata::chip {
+namespace strata::sampling {
 
 // From a snapshot of the chip's tree (its instructions and sampling groups are exact).
 stats::Factors extrapolation_factors(const stats::Values& root);
@@ -44,4 +44,4 @@ class SampledEstimate {
   double full_model_cycles_;
 };
 
-}  // namespace strata::chip
+}  // namespace strata::sampling

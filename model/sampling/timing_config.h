@@ -6,11 +6,12 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "model/stats/interval_method.h"
 #include "tlm/timing_mode.h"
 
-namespace strata::tm {
+namespace strata::sampling {
 
 struct TimingConfig {
   transport::TimingMode mode = transport::TimingMode::kLooselyTimed;
@@ -80,4 +81,8 @@ struct TimingConfig {
   stats::IntervalMethod sample_interval = stats::IntervalMethod::kSuccessiveDifferences;
 };
 
-}  // namespace strata::tm
+// timing.sample_target_stats's entries, trimmed; an empty or a repeated entry throws
+// std::invalid_argument naming the field (the window sampler checks the names against the tree).
+std::vector<std::string> sample_target_list(const std::string& list);
+
+}  // namespace strata::sampling

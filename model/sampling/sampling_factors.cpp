@@ -1,8 +1,8 @@
-#include "model/chip/sampling_factors.h"
+#include "model/sampling/sampling_factors.h"
 
 #include "model/iss/counters.h"
 
-namespace strata::chip {
+namespace strata::sampling {
 
 stats::Factors extrapolation_factors(const stats::Values& root) {
   stats::Factors f;
@@ -56,4 +56,4 @@ stats::Values SampledEstimate::scaled(stats::Values raw) const {
   return raw;
 }
 
-}  // namespace strata::chip
+}  // namespace strata::sampling
