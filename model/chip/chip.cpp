@@ -52,10 +52,10 @@ tm::TmSetup tm_setup_for(const ChipConfig& c) {
 Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameInputs& inputs)
     : sc_core::sc_module(name), config_(config), stats_("chip", "One simulated frame on the chip.") {
   const iss::ElfImage elf = iss::load_elf(inputs.kernel_elf);
-  code_ = build_code(elf);
-  kernel_name_ = std::filesystem::path(inputs.kernel_elf).filename().string();
-  kernel_digest_ = iss::image_digest(elf);
-  done_register_ = checked_design(config_.design).done_register;
+  program_.code = build_code(elf);
+  program_.name = std::filesystem::path(inputs.kernel_elf).filename().string();
+  program_.digest = iss::image_digest(elf);
+  program_.done_register = checked_design(config_.design).done_register;
   load(inputs, elf);
 
   // The shared levels through their interfaces (memory_levels.h), each the model its config
@@ -86,7 +86,7 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.turns = turns_.get();
   env.schedule = schedule_.get();
   env.backing = &backing_;
-  env.code = &code_;
+  env.code = &program_.code;
   env.globals = &globals_;
   env.entry_pc = elf.entry;
   env.tohost = elf.symbol("tohost").value_or(0);
@@ -98,8 +98,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
   env.stream_ray_bytes = config_.stream.ray_bytes;
   env.path_begin = layout_.path_table;
   env.path_end = layout_.path_table + uint64_t{layout_.path_slots} * kernels::kPathRecordBytes;
-  env.report_cycle = &report_cycle_;
-  env.node_treelets = node_treelets_;
+  env.report_cycle = &snapshot_.report_cycle;
+  env.node_treelets = frame_.node_treelets;
   pipeline_backend_ = inputs.pipeline_backend;
   if (config_.pipeline_impl == PipelineImpl::kRtl && !pipeline_backend_)
     throw ConfigError("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
@@ -123,8 +123,8 @@ Chip::Chip(sc_core::sc_module_name name, const ChipConfig& config, const FrameIn
         [this] { return finished(); }, [this] { return pixel_count() ? double(pixels_done()) / pixel_count() : 0.0; },
         [this] { return uint64_t{cycles()}; },
         [this] {  // every work item handed out: the frame's drain has begun
-          return samples_together_ ? globals_.values[kernels::kSampleCounterRegister] >= work_items()
-                                   : globals_.values[kernels::kPixelCounterRegister] >= pixels_;
+          return frame_.samples_together ? globals_.values[kernels::kSampleCounterRegister] >= work_items()
+                                   : globals_.values[kernels::kPixelCounterRegister] >= frame_.pixels;
         }});
 }
 
@@ -142,12 +142,12 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
     throw std::runtime_error(elf.path + ": no '" + std::string(kernels::kBootBlockSymbol) + "' symbol: not a render kernel");
   if (in.scene_image_bytes < sizeof(SceneImageHeader))
     throw std::runtime_error("chip: the scene image is smaller than its header");
-  pixels_ = in.frame.width * in.frame.height;
-  spp_ = in.frame.samples_per_pixel;
+  frame_.pixels = in.frame.width * in.frame.height;
+  frame_.spp = in.frame.samples_per_pixel;
   // The compact path state runs a pixel's samples together, each summed from its own slot.
   const bool compact = config_.design.streams && config_.design.path_state == PathStatePlacement::kCompact;
-  const uint64_t sample_slots = compact ? sample_slots_for(pixels_, spp_) : 0u;
-  samples_together_ = sample_slots > 0;
+  const uint64_t sample_slots = compact ? sample_slots_for(frame_.pixels, frame_.spp) : 0u;
+  frame_.samples_together = sample_slots > 0;
   // Per-TP stacks sit above the kernel, then the frame's data (guest_layout.h). Streaming
   // kernels keep one path record per ray the stream memory can hold.
   const uint64_t stacks = align_up(elf_end, 1 << 16);
@@ -155,11 +155,11 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   FrameFootprint f;
   f.scene_image_bytes = in.scene_image_bytes;
   f.treelet_bytes = in.treelet_bytes;
-  f.pixels = pixels_;
+  f.pixels = frame_.pixels;
   f.threads = config_.threads();
   f.sample_slots = sample_slots;
   f.path_slots = config_.design.streams && config_.design.path_state != PathStatePlacement::kCompact
-                     ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, pixels_)
+                     ? path_slots_for(memory::make_stream_layout(config_.stream).capacity, frame_.pixels)
                      : 0u;
   layout_ = plan_frame_layout(stacks_end, f);
   layout_.code_begin = code_begin;
@@ -173,7 +173,7 @@ void Chip::load(const FrameInputs& in, const iss::ElfImage& elf) {
   SceneImageHeader header;
   std::memcpy(&header, in.scene_image, sizeof header);
   data_classes_ = data_class_map(layout_, header);
-  node_treelets_ = header.node_treelet_count;
+  frame_.node_treelets = header.node_treelet_count;
 }
 
 void Chip::trace(sc_core::sc_trace_file* file, const memory::TraceWindow& window) {
@@ -206,8 +206,8 @@ transport::Cycle Chip::cycles() const {
 }
 
 uint32_t Chip::pixels_done() const {
-  if (samples_together_) return uint32_t(std::min<uint64_t>(globals_.values[kernels::kPixelsDoneRegister] / spp_, pixels_));
-  return std::min(globals_.values[done_register_], pixels_);
+  if (frame_.samples_together) return uint32_t(std::min<uint64_t>(globals_.values[kernels::kPixelsDoneRegister] / frame_.spp, frame_.pixels));
+  return std::min(globals_.values[program_.done_register], frame_.pixels);
 }
 
 uint64_t Chip::instructions() const {
@@ -217,7 +217,7 @@ uint64_t Chip::instructions() const {
 }
 
 std::vector<kernels::Pixel> Chip::framebuffer() const {
-  std::vector<kernels::Pixel> pixels(pixels_);
+  std::vector<kernels::Pixel> pixels(frame_.pixels);
   backing_.read(layout_.framebuffer, pixels.data(), pixels.size() * sizeof(kernels::Pixel));
   return pixels;
 }

@@ -52,6 +52,9 @@ struct FrameInputs {
   FusedBackendFactory pipeline_backend;
 };
 
+// The chip top owns every module it wires (the memory levels, the L1s and TMs, the turn order,
+// the sampler) and the frame's shared state, grouped by job (the program, the frame's shape, what
+// the statistics read): about twenty members, each a part of the chip rather than a job of its own.
 class Chip : public sc_core::sc_module {
  public:
   // Throws ConfigError / iss::ElfError / std::runtime_error naming what is wrong.
@@ -70,11 +73,11 @@ class Chip : public sc_core::sc_module {
   // Pixels whose every sample is finished (streaming kernels), or handed out (baseline). With a
   // pixel's samples in flight together, the samples finished, in pixels' worth.
   uint32_t pixels_done() const;
-  uint32_t pixel_count() const { return pixels_; }
+  uint32_t pixel_count() const { return frame_.pixels; }
   // What the kernel hands out as work: pixels, or (the compact path state at more than one
   // sample per pixel) samples, whose paths are in flight together.
-  uint64_t work_items() const { return samples_together_ ? uint64_t{pixels_} * spp_ : pixels_; }
-  bool samples_together() const { return samples_together_; }
+  uint64_t work_items() const { return frame_.samples_together ? uint64_t{frame_.pixels} * frame_.spp : frame_.pixels; }
+  bool samples_together() const { return frame_.samples_together; }
   uint64_t instructions() const;
 
   std::vector<kernels::Pixel> framebuffer() const;
@@ -83,8 +86,8 @@ class Chip : public sc_core::sc_module {
 
   const ChipConfig& config() const { return config_; }
   // The kernel that ran: its file name and the digest of its loaded image (iss::image_digest).
-  const std::string& kernel_name() const { return kernel_name_; }
-  const std::string& kernel_digest() const { return kernel_digest_; }
+  const std::string& kernel_name() const { return program_.name; }
+  const std::string& kernel_digest() const { return program_.digest; }
   const GuestLayout& layout() const { return layout_; }
   const std::vector<std::unique_ptr<ThreadMultiprocessor>>& tms() const { return tms_; }
   const std::vector<std::unique_ptr<memory::L1DataCache>>& l1d() const { return l1d_; }
@@ -112,15 +115,24 @@ class Chip : public sc_core::sc_module {
   memory::SparseMemory backing_;
   GlobalRegisters globals_;
   tm::TmSetup tm_setup_;  // the chip as its TMs see it (from config_)
-  iss::CodeImage code_;
-  std::string kernel_name_, kernel_digest_;
-  uint32_t done_register_ = 0;  // where the design's kernel counts finished work (design.h)
+  // The kernel: its code (predecoded once, shared by every TP), which one it is, and where it
+  // counts finished work.
+  struct Program {
+    iss::CodeImage code;
+    std::string name, digest;    // the ELF's file name; iss::image_digest of what it loads
+    uint32_t done_register = 0;  // the design's (design.h)
+  };
+  Program program_;
   GuestLayout layout_;
   transport::DataClassMap data_classes_;
-  uint32_t pixels_ = 0;
-  uint32_t spp_ = 1;
-  bool samples_together_ = false;  // the kernel got per-sample slots (guest_layout.h)
-  uint32_t node_treelets_ = 0;  // from the scene header: treelets [0, n) hold nodes
+  // The frame's shape, as the kernel sees it.
+  struct FrameShape {
+    uint32_t pixels = 0;
+    uint32_t spp = 1;
+    bool samples_together = false;  // the kernel got per-sample slots (guest_layout.h)
+    uint32_t node_treelets = 0;     // from the scene header: treelets [0, n) hold nodes
+  };
+  FrameShape frame_;
   std::unique_ptr<memory::DramLevel> dram_;
   std::unique_ptr<memory::L2Level> l2_;
   std::unique_ptr<memory::StreamLevel> stream_;
@@ -133,10 +145,14 @@ class Chip : public sc_core::sc_module {
   // Statistics: the tree, the groups the chip owns, and what they read at a snapshot.
   stats::Group stats_;
   std::vector<std::unique_ptr<stats::Group>> stat_groups_;
-  transport::Cycle report_cycle_ = 0;
-  kernels::RayCounters ray_totals_{};
-  uint64_t ray_total_ = 0;
-  memory::StreamOccupancy::Summary occupancy_{};  // the stream memory's levels up to report_cycle_
+  // What the statistics read, gathered before each snapshot.
+  struct Snapshot {
+    transport::Cycle report_cycle = 0;  // the cycle the statistics are taken at
+    kernels::RayCounters ray_totals{};
+    uint64_t ray_total = 0;
+    memory::StreamOccupancy::Summary occupancy{};  // the stream memory's levels up to report_cycle
+  };
+  Snapshot snapshot_;
   FusedBackendFactory pipeline_backend_;  // the TMs' environment points at it
   std::unique_ptr<SamplingSchedule> schedule_;  // sampled timing only
   std::unique_ptr<WindowSampler> sampler_;     // sampled timing only

@@ -28,10 +28,10 @@ void Chip::register_stats() {
   };
   stats::Group& root = stats_;
   root.before_snapshot([this] {
-    report_cycle_ = cycles();
-    ray_totals_ = ray_counters();
-    ray_total_ = 0;
-    for (uint32_t t = 0; t < kernels::kRayTypes; ++t) ray_total_ += ray_totals_.rays[t];
+    snapshot_.report_cycle = cycles();
+    snapshot_.ray_totals = ray_counters();
+    snapshot_.ray_total = 0;
+    for (uint32_t t = 0; t < kernels::kRayTypes; ++t) snapshot_.ray_total += snapshot_.ray_totals.rays[t];
   });
 
   stats::Group& info = own("chip", "The simulated chip's size and clock.", Basis::kExact);
@@ -42,7 +42,7 @@ void Chip::register_stats() {
   root.child(&info);
 
   stats::Group& frame = own("frame", "The frame's simulated time.", Basis::kExact);
-  frame.level("cycles", [this] { return report_cycle_; }, Unit::kCycles,
+  frame.level("cycles", [this] { return snapshot_.report_cycle; }, Unit::kCycles,
               "Cycles until the last TP finished (a run stopped early: as far as global time got).");
   const double hz = config_.clock_ghz * 1e9;
   frame.derived("seconds", Unit::kSeconds, "cycles at the chip clock.",
@@ -60,15 +60,15 @@ void Chip::register_stats() {
   const char* type_names[kernels::kRayTypes] = {"primary", "bounce", "shadow"};
   for (uint32_t t = 0; t < kernels::kRayTypes; ++t) {
     stats::Group& g = own(type_names[t], t == kernels::kShadowRay ? "Shadow rays to the light." : "Closest-hit rays.");
-    g.count("traced", &ray_totals_.rays[t], Unit::kCount, "Rays of this type traced.");
-    g.count(t == kernels::kShadowRay ? "occluded" : "hit", &ray_totals_.hits[t], Unit::kCount,
+    g.count("traced", &snapshot_.ray_totals.rays[t], Unit::kCount, "Rays of this type traced.");
+    g.count(t == kernels::kShadowRay ? "occluded" : "hit", &snapshot_.ray_totals.hits[t], Unit::kCount,
             t == kernels::kShadowRay ? "Shadow rays that found an occluder." : "Rays that hit a triangle.");
     rays.child(&g);
   }
-  rays.count("total", &ray_total_, Unit::kCount, "Rays of every type.");
-  rays.count("paths", &ray_totals_.paths, Unit::kCount, "Paths (samples) finished.");
-  rays.count("node_visits", &ray_totals_.node_visits, Unit::kCount, "BVH node reads.");
-  rays.count("triangle_tests", &ray_totals_.triangle_tests, Unit::kCount, "Ray-triangle tests.");
+  rays.count("total", &snapshot_.ray_total, Unit::kCount, "Rays of every type.");
+  rays.count("paths", &snapshot_.ray_totals.paths, Unit::kCount, "Paths (samples) finished.");
+  rays.count("node_visits", &snapshot_.ray_totals.node_visits, Unit::kCount, "BVH node reads.");
+  rays.count("triangle_tests", &snapshot_.ray_totals.triangle_tests, Unit::kCount, "Ray-triangle tests.");
   root.child(&rays);
 
   if (config_.timing.mode == transport::TimingMode::kSampled) {
@@ -99,7 +99,7 @@ void Chip::register_stats() {
                   "Stream-memory operations in the measured parts.");
     s.count_probe("measured_stream_moves", sum(&TmCounters::stream_moves), Unit::kCount,
                   "Ray pushes and pops in the measured parts.");
-    s.count_probe("measured_cycles", [this] { return schedule_->measured_cycles_before(report_cycle_); },
+    s.count_probe("measured_cycles", [this] { return schedule_->measured_cycles_before(snapshot_.report_cycle); },
                   Unit::kCycles, "Cycles of the measured parts (the windows past their warm-up) in the frame.");
     s.level("target_error", [this] { return config_.timing.sample_target_error; }, Unit::kRatio,
             "The 95% relative half-width asked of the statistics timing.sample_target_stats names (0: the period is "
@@ -108,17 +108,17 @@ void Chip::register_stats() {
             "Detailed windows the frame held before its last (partial) one.");
     s.level("period_changes", [this] { return uint64_t{schedule_ ? schedule_->changes() : 0}; }, Unit::kCount,
             "Times the error target changed the sampling period.");
-    s.level("last_period_cycles", [this] { return schedule_ ? schedule_->sampled_period_at(report_cycle_) : uint64_t{0}; },
+    s.level("last_period_cycles", [this] { return schedule_ ? schedule_->sampled_period_at(snapshot_.report_cycle) : uint64_t{0}; },
             Unit::kCycles,
             "The period at the frame's end, or before its drain (the configured one unless an error target changed it).");
-    s.level("head_cycles", [this] { return schedule_ ? std::min(schedule_->head_cycles(), report_cycle_) : uint64_t{0}; },
+    s.level("head_cycles", [this] { return schedule_ ? std::min(schedule_->head_cycles(), snapshot_.report_cycle) : uint64_t{0}; },
             Unit::kCycles,
             "The frame's first cycles, timed and measured in full as a stratum of their own (timing.sample_head_periods; "
             "0: no head).");
     s.level("drain_cycles",
             [this] {
               const uint64_t from = schedule_ ? schedule_->drain_from() : 0;
-              return from > 0 && report_cycle_ > from ? report_cycle_ - from : uint64_t{0};
+              return from > 0 && snapshot_.report_cycle > from ? snapshot_.report_cycle - from : uint64_t{0};
             },
             Unit::kCycles,
             "The frame's last cycles, from the window after the pixels left fell to timing.sample_drain_share, timed in "

@@ -18,7 +18,7 @@ namespace strata::chip {
 using stats::Unit;
 
 void Chip::register_treelet_stats(stats::Group& g) {
-  g.before_snapshot([this] { occupancy_ = stream_->occupancy().summary(report_cycle_); });
+  g.before_snapshot([this] { snapshot_.occupancy = stream_->occupancy().summary(snapshot_.report_cycle); });
   std::vector<const stats::Group*> sessions;
   for (const auto& tm : tms_) sessions.push_back(&tm->session_stats());
   g.instances("sessions", sessions, "tm", "TM's treelet sessions");
@@ -27,13 +27,13 @@ void Chip::register_treelet_stats(stats::Group& g) {
     stat_groups_.push_back(std::make_unique<stats::Group>(name, description, stats::Basis::kExact));
     return *stat_groups_.back();
   };
-  const memory::StreamOccupancy::Summary& o = occupancy_;
+  const memory::StreamOccupancy::Summary& o = snapshot_.occupancy;
   stats::Group& buffers = own("buffers",
                               "The treelet buffers of the stream memory: how many held rays, and how many rays each "
                               "held, time-weighted over the frame.");
   buffers.level("treelets", [this] { return uint64_t{stream_->layout().treelets}; }, Unit::kCount,
                 "Treelet buffers: one per treelet of the scene (memory.stream's; unused on TRaX).");
-  buffers.level("node_treelets", [this] { return uint64_t{node_treelets_}; }, Unit::kCount,
+  buffers.level("node_treelets", [this] { return uint64_t{frame_.node_treelets}; }, Unit::kCount,
                 "Of the scene's treelets, node treelets (the scene header's count); the rest hold triangles.");
   buffers.level("nonempty_mean", [&o] { return o.nonempty_mean; }, Unit::kCount,
                 "Buffers holding at least one ray: time-weighted mean over the frame.");

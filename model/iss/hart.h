@@ -5,6 +5,11 @@
 //
 // Hot path: no allocation and no virtual call per instruction. Instructions come from a
 // shared, predecoded CodeImage; only STRaTA operations call out, through the StrataHook.
+//
+// Its two dozen data members are one job's: a hart's architectural state (integer and float
+// registers, pc, the CSRs and their machine-mode fields) and its counters. They stay flat in one
+// object on purpose: the dispatch loop reads them every instruction, and grouping them behind
+// further objects would cost the hot path its locality for no gain in structure.
 #pragma once
 
 #include "model/iss/code_image.h"

@@ -28,25 +28,22 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       sync_shared_(sync_all_memory_ || env.setup->timing.sync_shared_ops),
       xus_(env.setup->tm),
       sampler_(env.setup->timing, env.schedule, env.setup->global_register_latency_cycles),
-      instruction_stats_("instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact),
-      xu_stats_("xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
-                stats::Basis::kTimedInstructions),
       sessions_(env.node_treelets) {
   port_.set_data_classes(env.data_classes);
   while ((1u << fetch_line_shift_) < setup_.l1i_line_bytes) ++fetch_line_shift_;
-  warming_ = sampler_.enabled() && setup_.timing.functional_warming;
-  ff_time_order_ = sampler_.enabled() && setup_.timing.fast_forward_time_order;
+  ff_.warming = sampler_.enabled() && setup_.timing.functional_warming;
+  ff_.time_order = sampler_.enabled() && setup_.timing.fast_forward_time_order;
   sampler_.set_op_classes(setup_.timing.fast_forward_op_classes);
-  warm_log_.line_shift = 0;
-  while ((1u << warm_log_.line_shift) < setup_.l1d_line_bytes) ++warm_log_.line_shift;
-  if (warming_) {
-    warm_log_.known.assign(setup_.l1d_size_bytes / setup_.l1d_line_bytes, 0);
+  ff_.warm_log.line_shift = 0;
+  while ((1u << ff_.warm_log.line_shift) < setup_.l1d_line_bytes) ++ff_.warm_log.line_shift;
+  if (ff_.warming) {
+    ff_.warm_log.known.assign(setup_.l1d_size_bytes / setup_.l1d_line_bytes, 0);
     // Not cached, so not warmed: the TPs' stacks (local memory) and on-chip path state.
-    warm_log_.skip_lo[0] = env.stacks_base;
-    warm_log_.skip_hi[0] = env.stacks_base + uint64_t{setup_.threads()} * setup_.tp_stack_bytes;
+    ff_.warm_log.skip_lo[0] = env.stacks_base;
+    ff_.warm_log.skip_hi[0] = env.stacks_base + uint64_t{setup_.threads()} * setup_.tp_stack_bytes;
     if (env.path_state_on_chip) {
-      warm_log_.skip_lo[1] = env.path_begin;
-      warm_log_.skip_hi[1] = env.path_end;
+      ff_.warm_log.skip_lo[1] = env.path_begin;
+      ff_.warm_log.skip_hi[1] = env.path_end;
     }
   }
   if (setup_.rtl_pipelines.at(tm_id)) {
@@ -54,7 +51,7 @@ ThreadMultiprocessor::ThreadMultiprocessor(sc_core::sc_module_name name, const T
       throw std::runtime_error("tm.pipeline_impl: rtl, but the program running the chip supplied no RTL pipeline backend");
     FusedBackendSetup setup;
     setup.tm = tm_id;
-    setup.cycle = [this] { return current_ != nullptr ? current_->timing.next_issue() : port_.global_cycle(); };
+    setup.cycle = [this] { return hook_.tp != nullptr ? hook_.tp->timing.next_issue() : port_.global_cycle(); };
     pipeline_backend_ = (*env.pipeline_backend)(setup);
     if (!pipeline_backend_) throw std::runtime_error("tm.pipeline_impl: rtl, but no RTL pipeline backend was made for TM " +
                                               std::to_string(tm_id));
@@ -158,7 +155,7 @@ void ThreadMultiprocessor::run() {
         const Cycle next_window = sampler_.next_window(window);
         const Cycle ahead = Cycle{setup_.timing.fast_forward_batch_quanta} * setup_.timing.quantum_cycles;
         const Cycle ff_until = others == TpSchedule::kDone ? next_window : std::min(next_window, others + ahead);
-        ff_others_ = others;
+        ff_.others = others;
         if (fast_forward(tp, std::max(ff_until, start + 1))) {
           schedule.set(index, tp.timing.next_issue());
         } else {
@@ -266,7 +263,7 @@ Cycle ThreadMultiprocessor::time_data_access(Tp& tp, Cycle at) {
   }
   // One request per cache line touched (a pipeline operand may straddle two lines); they
   // issue together and the access completes with the last of them.
-  l1_timed_since_warming_ = true;
+  ff_.l1_timed_since_warming = true;
   const uint32_t line = setup_.l1d_line_bytes;
   uint8_t scratch[256];
   Cycle ready = at;
@@ -295,11 +292,11 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   tp.begun = false;
   const iss::Decoded decoded = *d;  // the hart may rewrite the code image (self-modifying code)
   tp.memory.record().clear();
-  current_ = &tp;
-  request_cycle_ = earliest;
-  hook_timed_ = false;
+  hook_.tp = &tp;
+  hook_.request_cycle = earliest;
+  hook_.timed = false;
   const iss::RunResult r = tp.hart.run(1);
-  current_ = nullptr;
+  hook_.tp = nullptr;
   if (!error_.empty()) return false;
   const bool stopped = r.reason != iss::StopReason::kInstructionLimit;
   if (stopped && !r.ok()) {
@@ -316,9 +313,9 @@ bool ThreadMultiprocessor::step(Tp& tp) {
   if (memory_like) {
     Cycle ready = earliest + 1;
     if (tp.memory.record().any) ready = std::max(ready, time_data_access(tp, earliest));
-    if (hook_timed_) {
-      ready = std::max(ready, hook_ready_);
-      if (sampler_.measuring()) sampler_.note_wait(ready - earliest, op_class_);
+    if (hook_.timed) {
+      ready = std::max(ready, hook_.ready);
+      if (sampler_.measuring()) sampler_.note_wait(ready - earliest, hook_.op_class);
     }
     tp.timing.complete_memory(decoded, earliest, ready);
   } else {
@@ -341,7 +338,7 @@ bool ThreadMultiprocessor::step(Tp& tp) {
 
 iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
   iss::HookResult result;
-  Tp& tp = *current_;
+  Tp& tp = *hook_.tp;
   const uint32_t tp_index = tp.thread_id % setup_.tps_per_tm;
   switch (call.op) {
     case iss::Op::kStThreadId: result.dest[0] = tp.thread_id; return result;
@@ -366,10 +363,10 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
       if (call.op == iss::Op::kStGlobalWrite) g = call.rs2;
       ++env_.globals->operations;
       ++counters_.global_register_ops;
-      op_class_ = sampling::TmSampler::kGlobal;
-      if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
-      hook_timed_ = true;
-      hook_ready_ = request_cycle_ + setup_.global_register_latency_cycles;
+      hook_.op_class = sampling::TmSampler::kGlobal;
+      if (sampler_.in_batch()) sampler_.note_batch_wait(hook_.op_class);
+      hook_.timed = true;
+      hook_.ready = hook_.request_cycle + setup_.global_register_latency_cycles;
       return result;
     }
     case iss::Op::kStStreamCapacity:
@@ -384,7 +381,7 @@ iss::HookResult ThreadMultiprocessor::execute_op(const iss::HookCall& call) {
 
 iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) {
   iss::HookResult result;
-  Tp& tp = *current_;
+  Tp& tp = *hook_.tp;
   if (!setup_.streams) {
     result.status = iss::HookStatus::kIllegal;
     result.message = "stream memory operations need a design with streams (design.streams)";
@@ -408,28 +405,28 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
     ++counters_.stream_moves_all;
     if (counting()) ++counters_.stream_moves;
   }
-  op_class_ = sampling::TmSampler::kOtherOp;
+  hook_.op_class = sampling::TmSampler::kOtherOp;
   switch (call.op) {
     case iss::Op::kStStreamCapacity:
-      hook_ready_ = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, request_cycle_, false,
+      hook_.ready = transact(stream_port, AccessClass::kStreamCapacity, 0, scratch, 4, hook_.request_cycle, false,
                              transport::kNoTreelet, tp);
       result.dest[0] = ext.result;
       break;
     case iss::Op::kStStreamPush:
     case iss::Op::kStStreamPush64:
       std::memcpy(scratch, call.in, ray_bytes);
-      hook_ready_ = transact(stream_port, AccessClass::kStreamPush, 0, scratch, ray_bytes, request_cycle_, false,
+      hook_.ready = transact(stream_port, AccessClass::kStreamPush, 0, scratch, ray_bytes, hook_.request_cycle, false,
                              call.rs2, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
       if (ext.stream_status == StreamStatus::kFull) ++counters_.stream_push_full;
-      op_class_ = result.dest[0] ? sampling::TmSampler::kPushStored : sampling::TmSampler::kPushFull;
+      hook_.op_class = result.dest[0] ? sampling::TmSampler::kPushStored : sampling::TmSampler::kPushFull;
       break;
     case iss::Op::kStStreamPop:
     case iss::Op::kStStreamPop64:
-      hook_ready_ = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, request_cycle_, false,
+      hook_.ready = transact(stream_port, AccessClass::kStreamPop, 0, scratch, ray_bytes, hook_.request_cycle, false,
                              transport::kNoTreelet, tp);
       result.dest[0] = ext.stream_status == StreamStatus::kOk ? 1u : 0u;
-      op_class_ = result.dest[0] ? sampling::TmSampler::kPopRay : sampling::TmSampler::kPopEmpty;
+      hook_.op_class = result.dest[0] ? sampling::TmSampler::kPopRay : sampling::TmSampler::kPopEmpty;
       if (result.dest[0]) {
         std::memcpy(call.out, scratch, ray_bytes);
         result.status = iss::HookStatus::kStore;
@@ -437,16 +434,16 @@ iss::HookResult ThreadMultiprocessor::execute_stream(const iss::HookCall& call) 
       }
       break;
     default:  // kStStreamAssign
-      hook_ready_ = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, request_cycle_, false,
+      hook_.ready = transact(stream_port, AccessClass::kStreamAssign, 0, scratch, 4, hook_.request_cycle, false,
                              transport::kNoTreelet, tp);
       result.dest[0] = ext.result;
       sessions_.assigned(ext.result);
-      op_class_ = ext.result == transport::kNoTreelet ? sampling::TmSampler::kAssignNone : sampling::TmSampler::kAssignFound;
+      hook_.op_class = ext.result == transport::kNoTreelet ? sampling::TmSampler::kAssignNone : sampling::TmSampler::kAssignFound;
       trace_.treelet(ext.result, port_.global_cycle());
       break;
   }
-  if (sampler_.in_batch()) sampler_.note_batch_wait(op_class_);
-  hook_timed_ = true;
+  if (sampler_.in_batch()) sampler_.note_batch_wait(hook_.op_class);
+  hook_.timed = true;
   return result;
 }
 

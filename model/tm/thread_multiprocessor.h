@@ -120,8 +120,8 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   const TmCounters& counters() const { return counters_; }
   const tm::XuCrossbar& xus() const { return xus_; }
   // This TM's statistics groups: its TPs' instructions and stalls, and its XU crossbar.
-  const stats::Group& instruction_stats() const { return instruction_stats_; }
-  const stats::Group& xu_stats() const { return xu_stats_; }
+  const stats::Group& instruction_stats() const { return stats_.instructions; }
+  const stats::Group& xu_stats() const { return stats_.xu; }
   // Its treelet sessions: rays traced and L1 lines filled per treelet buffer it took.
   const stats::Group& session_stats() const { return sessions_.stats(); }
   tm::TpStats tp_stats() const;  // summed over the TM's TPs
@@ -151,7 +151,7 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   bool step(Tp& tp);  // false: the TP is done (halted, or failed)
   // Sampled timing: runs `tp` functionally until about `until`; false when it is done.
   bool fast_forward(Tp& tp, transport::Cycle until);
-  // Functional warming: the batch's logged loads and stores as tag updates (warm_log_).
+  // Functional warming: the batch's logged loads and stores as tag updates (ff_.warm_log).
   void replay_warm_log(const Tp& tp);
   // Whether the current access goes into the statistics (sampled: measured parts only).
   bool counting() const { return sampler_.counting(); }
@@ -174,7 +174,6 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   TmEnvironment env_;
   const TmSetup& setup_;  // the chip as the TM sees it
   uint32_t tm_id_;
-  transport::PayloadPool pool_;  // fast-forward's warming accesses
   // Time against global time, and the TM's own accesses (tlm/memory_port.h).
   transport::MemoryPort port_;
   tm::OpTimingTable op_table_;
@@ -194,31 +193,45 @@ class ThreadMultiprocessor : public sc_core::sc_module, private iss::StrataHook 
   uint32_t fetch_line_shift_ = 0;      // log2(L1I line bytes)
 
   sampling::TmSampler sampler_;  // sampled timing's state (enabled in that mode only)
-  WarmLog warm_log_;   // the current fast-forward batch's L1 lines (functional warming)
-  bool warming_ = false;
-  bool l1_timed_since_warming_ = true;  // a timed access changed the L1: warm_log_.forget()
-  // timing.fast_forward_time_order: a batch's stream and global-register ops wait for global
-  // time to reach their date, and one dated past `ff_others_` (the earliest next cycle of the
-  // TM's other TPs) is deferred: the batch stops before it, and the TP resumes there when it
-  // is the TM's earliest (tm_fast_forward.cpp).
-  bool ff_time_order_ = false;
-  unsigned op_class_ = 0;  // TmSampler::OpClass of the stream/global op just executed
-  transport::Cycle ff_others_ = 0;
 
-  // The instruction being executed, for the hook.
-  Tp* current_ = nullptr;
-  transport::Cycle request_cycle_ = 0;
-  transport::Cycle hook_ready_ = 0;
-  bool hook_timed_ = false;
+  // Sampled timing's fast-forward (tm_fast_forward.cpp).
+  struct FastForward {
+    transport::PayloadPool pool;  // functional warming's tag updates
+    WarmLog warm_log;             // the current batch's L1 lines (functional warming)
+    bool warming = false;
+    bool l1_timed_since_warming = true;  // a timed access changed the L1: warm_log.forget()
+    // timing.fast_forward_time_order: a batch's stream and global-register ops wait for global
+    // time to reach their date, and one dated past `others` (the earliest next cycle of the
+    // TM's other TPs) is deferred: the batch stops before it, and the TP resumes there when it
+    // is the TM's earliest.
+    bool time_order = false;
+    transport::Cycle others = 0;
+  };
+  FastForward ff_;
 
-  // Statistics: sums over the TPs and the crossbar's counters, refreshed before a snapshot.
-  iss::Counters iss_totals_;
-  std::array<uint64_t, tm::kStallCauseCount> stall_totals_{};
-  tm::XuStats xu_totals_;
-  stats::Group instruction_stats_;
-  stats::Group xu_stats_;
+  // The instruction being executed, for the hook (execute()).
+  struct Executing {
+    Tp* tp = nullptr;
+    transport::Cycle request_cycle = 0;  // when its memory-like op may reach its target
+    transport::Cycle ready = 0;          // when the hook's op completed
+    bool timed = false;                  // the hook timed the op itself
+    unsigned op_class = 0;               // TmSampler::OpClass of the stream/global op just executed
+  };
+  Executing hook_;
+
+  // Statistics (tm_statistics.cpp): sums over the TPs and the crossbar's counters, refreshed
+  // before a snapshot, and the groups that publish them.
+  struct Statistics {
+    iss::Counters iss_totals;
+    std::array<uint64_t, tm::kStallCauseCount> stall_totals{};
+    tm::XuStats xu_totals;
+    stats::Group instructions{"instructions", "What the TPs executed, and why they waited.", stats::Basis::kExact};
+    stats::Group xu{"xu", "The shared execution units: use by mode and class, fused pipelines, reconfigurations.",
+                    stats::Basis::kTimedInstructions};
+    std::vector<std::unique_ptr<stats::Group>> groups;  // the sub-groups of both
+  };
+  Statistics stats_;
   TreeletSessions sessions_;
-  std::vector<std::unique_ptr<stats::Group>> stat_groups_;  // the sub-groups of both
 
   TmTrace trace_;  // VCD signals
 };

@@ -31,21 +31,21 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
   // The batch is sized by the average cost, and charged by what it ran.
   const double span = double(until) - tp.ff_clock;
   const uint64_t batch = span > cpi ? static_cast<uint64_t>(span / cpi) : 1u;
-  current_ = &tp;
+  hook_.tp = &tp;
   sampler_.begin_batch(tp.ff_clock, until);
-  if (warming_) {
-    warm_log_.clear();
-    if (l1_timed_since_warming_) {
-      warm_log_.forget();
-      l1_timed_since_warming_ = false;
+  if (ff_.warming) {
+    ff_.warm_log.clear();
+    if (ff_.l1_timed_since_warming) {
+      ff_.warm_log.forget();
+      ff_.l1_timed_since_warming = false;
     }
-    tp.memory.set_warm_log(&warm_log_);
+    tp.memory.set_warm_log(&ff_.warm_log);
   }
   const iss::RunResult r = tp.hart.run(batch);
   tp.memory.set_warm_log(nullptr);
-  current_ = nullptr;
+  hook_.tp = nullptr;
   sampler_.end_batch();
-  if (warming_) replay_warm_log(tp);
+  if (ff_.warming) replay_warm_log(tp);
   counters_.instructions += r.executed;
   ++counters_.fast_forward_batches;
   trace_.instructions(r.executed, port_.global_cycle());
@@ -65,10 +65,10 @@ bool ThreadMultiprocessor::fast_forward(Tp& tp, Cycle until) {
 
 void ThreadMultiprocessor::replay_warm_log(const Tp& tp) {
   // The log holds only what changes a tag (tp_memory.h): each entry is one warming request.
-  for (const uint64_t e : warm_log_.entries) {
-    const uint64_t addr = (e >> 1) << warm_log_.line_shift;
+  for (const uint64_t e : ff_.warm_log.entries) {
+    const uint64_t addr = (e >> 1) << ff_.warm_log.line_shift;
     const bool store = (e & 1u) != 0;
-    transport::PooledPayload gp(pool_);
+    transport::PooledPayload gp(ff_.pool);
     uint32_t scratch = 0;
     transport::prepare_access(gp, store ? AccessClass::kDataStore : AccessClass::kDataLoad, addr, &scratch, 4,
                               tp.thread_id, tm_id_, transport::kNoTreelet, true, true, false);
@@ -85,8 +85,8 @@ bool ThreadMultiprocessor::in_time_order() {
   // dated past another TP of this TM must wait for that TP, which the TM runs first: the op is
   // deferred (the batch stops before it, and fast_forward() sets the TP's next issue to its
   // date), so the TM's own TPs reach shared state in time order too.
-  if (request_cycle_ > ff_others_) return false;
-  sync_to(request_cycle_, ff_others_, true);
+  if (hook_.request_cycle > ff_.others) return false;
+  sync_to(hook_.request_cycle, ff_.others, true);
   return true;
 }
 
@@ -99,9 +99,9 @@ iss::HookResult ThreadMultiprocessor::execute(const iss::HookCall& call) {
   // With timing.fast_forward_time_order, an op on shared state (stream memory, global
   // registers) first waits for its turn in time order (in_time_order()), or is deferred.
   const bool batch = sampler_.in_batch();
-  if (batch) request_cycle_ = sampler_.batch_cycle(call.retired_in_run);
+  if (batch) hook_.request_cycle = sampler_.batch_cycle(call.retired_in_run);
   iss::HookResult result =
-      batch && ff_time_order_ && shared_op(call.op) && !in_time_order() ? deferred() : execute_op(call);
+      batch && ff_.time_order && shared_op(call.op) && !in_time_order() ? deferred() : execute_op(call);
   if (batch) result.yield = sampler_.batch_done_after(call.retired_in_run);
   return result;
 }

@@ -10,26 +10,26 @@ using stats::Basis;
 using stats::Unit;
 
 void ThreadMultiprocessor::refresh_stats() {
-  iss_totals_ = iss_counters();
-  stall_totals_ = {};
+  stats_.iss_totals = iss_counters();
+  stats_.stall_totals = {};
   for (const auto& tp : tps_) {
     const tm::TpStats& s = tp->timing.stats();
-    for (size_t i = 0; i < stall_totals_.size(); ++i) stall_totals_[i] += s.stall_cycles[i];
+    for (size_t i = 0; i < stats_.stall_totals.size(); ++i) stats_.stall_totals[i] += s.stall_cycles[i];
   }
   const transport::Cycle now = env_.report_cycle ? *env_.report_cycle : counters_.finished_cycle;
-  xu_totals_ = xus_.stats(now);
+  stats_.xu_totals = xus_.stats(now);
 }
 
 void ThreadMultiprocessor::register_stats() {
   auto sub = [this](const char* name, const char* description, Basis basis = Basis::kInherit) -> stats::Group& {
-    stat_groups_.push_back(std::make_unique<stats::Group>(name, description, basis));
-    return *stat_groups_.back();
+    stats_.groups.push_back(std::make_unique<stats::Group>(name, description, basis));
+    return *stats_.groups.back();
   };
   const TmCounters& k = counters_;
-  stats::Group& in = instruction_stats_;
+  stats::Group& in = stats_.instructions;
   in.before_snapshot([this] { refresh_stats(); });
-  in.count("retired", &iss_totals_.retired, Unit::kCount, "Instructions retired by the TPs (exact in every mode).");
-  in.count("fetched", &iss_totals_.retired, Unit::kCount,
+  in.count("retired", &stats_.iss_totals.retired, Unit::kCount, "Instructions retired by the TPs (exact in every mode).");
+  in.count("fetched", &stats_.iss_totals.retired, Unit::kCount,
            "Instructions fetched: one per retired instruction (in order, no prediction, no refetch).");
   in.count("icache_line_requests", &k.icache_fetch_requests, Unit::kCount,
            "Fetches that moved to another cache line and asked the L1 instruction cache.",
@@ -58,15 +58,15 @@ void ThreadMultiprocessor::register_stats() {
   for (unsigned c = 0; c < iss::kClassCount; ++c) {
     const auto cls = static_cast<iss::InstrClass>(c);
     if (cls == iss::InstrClass::kIllegal) continue;  // never retires
-    mix.count(iss::class_name(cls), &iss_totals_.by_class[c], Unit::kCount, "Retired instructions of this class.");
+    mix.count(iss::class_name(cls), &stats_.iss_totals.by_class[c], Unit::kCount, "Retired instructions of this class.");
   }
   in.child(&mix);
   stats::Group& rf = sub("register_file", "Register-file accesses of the retired instructions, x0 excluded (exact).",
                          Basis::kExact);
-  rf.count("int_reads", &iss_totals_.int_reads, Unit::kCount, "Integer register reads.");
-  rf.count("int_writes", &iss_totals_.int_writes, Unit::kCount, "Integer register writes.");
-  rf.count("fp_reads", &iss_totals_.fp_reads, Unit::kCount, "FP register reads.");
-  rf.count("fp_writes", &iss_totals_.fp_writes, Unit::kCount, "FP register writes.");
+  rf.count("int_reads", &stats_.iss_totals.int_reads, Unit::kCount, "Integer register reads.");
+  rf.count("int_writes", &stats_.iss_totals.int_writes, Unit::kCount, "Integer register writes.");
+  rf.count("fp_reads", &stats_.iss_totals.fp_reads, Unit::kCount, "FP register reads.");
+  rf.count("fp_writes", &stats_.iss_totals.fp_writes, Unit::kCount, "FP register writes.");
   in.child(&rf);
   stats::Group& stalls =
       sub("stall_cycles", "TP-cycles an instruction waited to issue, by cause (docs/tm-timing.md).",
@@ -77,11 +77,11 @@ void ThreadMultiprocessor::register_stats() {
       "Waiting for a memory-like operation's result, or for the memory system to accept.",
       "Waiting for a busy XU or fused pipeline, or a reconfiguration."};
   for (unsigned s = 0; s < tm::kStallCauseCount; ++s)
-    stalls.count(tm::stall_cause_name(tm::StallCause(s)), &stall_totals_[s], Unit::kCycles, why[s]);
+    stalls.count(tm::stall_cause_name(tm::StallCause(s)), &stats_.stall_totals[s], Unit::kCycles, why[s]);
   in.child(&stalls);
 
-  const tm::XuStats& x = xu_totals_;
-  stats::Group& xu = xu_stats_;
+  const tm::XuStats& x = stats_.xu_totals;
+  stats::Group& xu = stats_.xu;
   xu.before_snapshot([this] { refresh_stats(); });
   xu.count("box_tests", &x.box_tests, Unit::kCount, "Fused ray-box tests.");
   xu.count("triangle_tests", &x.triangle_tests, Unit::kCount, "Fused ray-triangle (Plücker) tests.");
