@@ -99,7 +99,9 @@ FrameReport::FrameReport(const Chip& chip, double wall_seconds, bool interrupted
     const stats::BatchMeans& b = *chip.window_batches();
     const stats::Values middle = b.weighted_total(raw);
     simulated_cycles_ = raw.number("frame.cycles");
-    values_ = sampling::SampledEstimate(middle, b.strata(raw), simulated_cycles_).scaled(middle);
+    const sampling::SampledEstimate estimate(middle, b.strata(raw), simulated_cycles_);
+    samples_cycles_ = estimate.samples_cycles();
+    values_ = estimate.scaled(middle);
     // The sampling group reports what was timed and measured, not its weighted sums.
     const auto sampling = [](const std::string& path, const stats::Values::Stat&) {
       return path.compare(0, 9, "sampling.") == 0;
@@ -200,7 +202,10 @@ nlohmann::json FrameReport::to_json(const std::set<std::string>& detail) const {
                          {"windows", windows_},
                          {"batches", batches_},
                          {"measured_share", measured_share_},
-                         {"simulated_frame_cycles", simulated_cycles_}};
+                         {"simulated_frame_cycles", simulated_cycles_},
+                         // Beside the clock, for the frame time's validation against LT (the
+                         // interval is the samples' spread, centred on the clock).
+                         {"samples_frame_cycles", samples_cycles_}};
     if (!replicates_.empty()) {
       // Each figure re-estimated without one batch, in batch order (the frame's start first).
       nlohmann::json r = nlohmann::json::object();

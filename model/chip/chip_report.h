@@ -58,6 +58,7 @@ class FrameReport {
   // time (SampledEstimate); stats.json and the summary give both, so the clock's own error
   // (the windows' warm-ups, the fast-forward's rates) can be seen against LT.
   double simulated_cycles_ = 0;
+  double samples_cycles_ = 0;  // the samples' own frame-time estimate (SampledEstimate)
   std::string interval_note_;
   size_t batches_ = 0, windows_ = 0;
   double measured_share_ = 0;  // of the frame's cycles, by the windows' measured parts

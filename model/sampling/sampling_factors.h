@@ -31,6 +31,10 @@ class SampledEstimate {
   // The estimate from the middle's raw totals `raw` (the centre, or a replicate), before the
   // ratios and formulas are derived.
   stats::Values scaled(stats::Values raw) const;
+  // The samples' own estimate of the frame time: each stratum's instructions at its measured
+  // cycles per instruction (the clock is what frame.cycles reports; docs/sampled-timing.md,
+  // "The frame time").
+  double samples_cycles() const { return full_model_cycles_; }
   stats::Values operator()(stats::Values raw) const {
     stats::Values v = scaled(std::move(raw));
     v.derive();

@@ -469,6 +469,10 @@ TEST(SampledTimingIntervals, TheMethodChangesTheIntervalsNotTheEstimates) {
   const double clock = succ["intervals"]["simulated_frame_cycles"].get<double>();
   EXPECT_NEAR(share, succ["sampling"]["measured_cycles"].get<double>() / clock, 1e-9);
   EXPECT_NEAR(clock / succ["frame"]["cycles"].get<double>(), 1.0, 0.05);
+  // The samples' own frame-time estimate beside the clock: the same frame, within the few
+  // percent the clock's fast-forward may be off (docs/sampled-timing.md, "The frame time").
+  const double samples = succ["intervals"]["samples_frame_cycles"].get<double>();
+  EXPECT_NEAR(samples / clock, 1.0, 0.1);
   for (const char* path : {"frame.cycles", "memory.dram.bytes", "memory.l2.accesses"})
     EXPECT_EQ(succ["intervals"]["replicates"][path].size(), succ["intervals"]["batches"].get<size_t>()) << path;
   EXPECT_NE(jack_log.find("batches (jackknife; "), std::string::npos) << jack_log;
