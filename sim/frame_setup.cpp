@@ -2,6 +2,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "model/chip/design.h"
 #include "sim/iss_render.h"

@@ -1,5 +1,7 @@
 #include "model/chip/design.h"
 
+#include <string>
+
 #include "firmware/abi/frame_abi.h"
 
 namespace strata::chip {

@@ -1,5 +1,6 @@
 #include "model/memory/memory_level_factory.h"
 
+#include <stdexcept>
 #include <string>
 
 #include "model/memory/dram.h"
