@@ -6,21 +6,14 @@
 #include <filesystem>
 #include <fstream>
 
+#include "config_support.h"
 #include "model/chip/chip_config.h"
 
 namespace strata::chip {
 namespace {
 
-std::string config_dir() { return std::string(STRATA_SOURCE_DIR) + "/sim/configs/"; }
-
-std::string error_of(const std::string& file, const std::vector<std::string>& overrides) {
-  try {
-    load_chip_config(file, overrides);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::config_dir;
+using test::error_of;
 
 TEST(ChipConfig, TheThreeDesignsLoad) {
   const ChipConfig trax = load_chip_config(config_dir() + "trax.json", {});

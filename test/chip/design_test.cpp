@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "config_support.h"
 #include "model/chip/chip_config.h"
 #include "model/chip/design.h"
 #include "sim/iss_render.h"
@@ -13,16 +14,8 @@
 namespace strata::chip {
 namespace {
 
-std::string config_dir() { return std::string(STRATA_SOURCE_DIR) + "/sim/configs/"; }
-
-std::string error_of(const std::string& file, const std::vector<std::string>& sets) {
-  try {
-    load_chip_config(file, sets);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::config_dir;
+using test::error_of;
 
 TEST(Design, EveryShippedConfigNamesADesignWhoseKernelsWereBuilt) {
   for (const char* file : {"trax.json", "strata-streams.json", "strata-pipelines.json"}) {
