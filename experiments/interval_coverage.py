@@ -13,6 +13,7 @@ the same as coverage.csv in the output folder. --sampled NAME compares the sampl
 NAME/ instead of sampled/ (e.g. sampled-batch16k, from intervals-sampled-batch16k.json) and
 writes coverage-NAME.csv. Where the sampled runs give the simulated clock
 (intervals.simulated_frame_cycles), a last table sets it beside the reported frame time.
+The frame time's interval includes the clock's systematic error (frame_time_half_width).
 Frames are compared only when both runs executed the same kernel image (the sweep's "kernel"
 column, from stats.json's simulation.kernel): a kernel's code layout alone moves frame timing by
 a few percent. A pair with different kernels is left out and listed; a run made before the
@@ -56,6 +57,21 @@ def interval(row, path):
     return value(row, f"intervals.stats.{path}.half_width")
 
 
+def frame_time_half_width(row):
+    """The frame time's half-width with the clock's systematic error in it (its disagreement with
+    the samples' estimate, docs/sampled-timing.md, "The frame time"), and where that came from:
+    "in run" (runs since 2026-12-07, intervals.frame_time_systematic), "recomputed" (a run that
+    published both frame times but not the term: the spread plus their difference), or
+    "none" (an older run: the spread alone)."""
+    hw = interval(row, "frame.cycles") or 0.0
+    if value(row, "intervals.frame_time_systematic") is not None:
+        return hw, "in run"
+    clock, est = value(row, "intervals.simulated_frame_cycles"), value(row, "intervals.samples_frame_cycles")
+    if clock and est and value(row, "frame.cycles") == clock:
+        return hw + abs(est - clock), "recomputed"
+    return hw, "none"
+
+
 def same_kernel_pairs(lt, sampled):
     """The frames both sets ran under the same kernel image; those whose kernels differ, with
     the two kernels; and those where either run has no digest (compared, but unchecked)."""
@@ -86,7 +102,7 @@ def main():
         print(f"left out: {' '.join(map(str, key))}: LT ran {kernels[0]}, sampled ran {kernels[1]} (re-run one of them)")
     for key in unchecked:
         print(f"unchecked: {' '.join(map(str, key))}: a run made before kernel digests were recorded")
-    rows, inside, total, ratios = [], {}, {}, {}
+    rows, inside, total, ratios, spread_only = [], {}, {}, {}, []
     for key in pairs:
         ref, est = lt[key], sampled[key]
         for path, label in METRICS:
@@ -94,6 +110,13 @@ def main():
             if r is None or e is None:
                 continue
             hw = hw or 0.0
+            if path == "frame.cycles":
+                hw, source = frame_time_half_width(est)
+                if source == "none":
+                    spread_only.append(key)
+                elif source == "recomputed":
+                    print(f"recomputed: {' '.join(map(str, key))}: the frame time's interval is the run's spread plus "
+                          f"|samples' estimate - clock| (the run predates intervals.frame_time_systematic)")
             err = e - r
             ok = abs(err) <= hw
             inside[label] = inside.get(label, 0) + ok
@@ -103,6 +126,9 @@ def main():
             rows.append({"design": key[0], "scene": key[1], "res": key[2], "seed": key[3], "metric": label,
                          "lt": r, "sampled": e, "error": err, "relative error": err / r if r else 0.0,
                          "half width": hw, "relative half width": hw / abs(e) if e else 0.0, "inside": ok})
+    for key in spread_only:
+        print(f"spread only: {' '.join(map(str, key))}: the run predates intervals.samples_frame_cycles, so its frame-time "
+              f"interval lacks the clock's systematic error (re-run it to compare like with like)")
     name = "coverage.csv" if a.sampled == "sampled" else f"coverage-{a.sampled}.csv"
     with open(os.path.join(a.out, name), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
@@ -141,7 +167,7 @@ def main():
     # (intervals.samples_frame_cycles); on runs of 2026-12-06 it was frame.cycles itself.
     clocks = [(key, value(sampled[key], "intervals.simulated_frame_cycles"),
                value(sampled[key], "intervals.samples_frame_cycles") or value(sampled[key], "frame.cycles"),
-               value(lt[key], "frame.cycles"), interval(sampled[key], "frame.cycles"))
+               value(lt[key], "frame.cycles"), frame_time_half_width(sampled[key])[0])
               for key in pairs]
     clocks = [c for c in clocks if c[1] is not None and c[3]]
     if clocks:

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <map>
 #include <vector>
 #include <set>
@@ -52,11 +53,14 @@ class FrameReport {
   uint64_t resident_bytes_;
   stats::Group simulation_;
   stats::Values values_;
-  std::map<std::string, double> half_widths_;
+  std::map<std::string, double> half_widths_;  // the batches' spread plus the clock's systematic
+  // The part of each half-width that is the clock's systematic error: how far the figure moves
+  // when the frame time is the samples' estimate instead of the clock.
+  std::map<std::string, double> clock_systematic_;
   bool timed_in_full_ = false;  // sampled, but all of it in the head and drain strata
-  // Sampled timing: the simulated clock at the frame's end. frame.cycles is the samples' frame
-  // time (SampledEstimate); stats.json and the summary give both, so the clock's own error
-  // (the windows' warm-ups, the fast-forward's rates) can be seen against LT.
+  // Sampled timing: the simulated clock at the frame's end (frame.cycles), and the samples' own
+  // estimate of the frame time (SampledEstimate); stats.json and the summary give both, and
+  // their disagreement is in the frame time's interval.
   double simulated_cycles_ = 0;
   double samples_cycles_ = 0;  // the samples' own frame-time estimate (SampledEstimate)
   std::string interval_note_;
@@ -67,6 +71,10 @@ class FrameReport {
   // Sampled timing, a finished frame: its windows weight the estimates and give them intervals.
   bool has_intervals() const { return chip_.window_batches() != nullptr && !interrupted_; }
   void estimate_intervals(const stats::Values& raw);
+  // Adds the clock's systematic error to the intervals (`centre`: the estimate's figures, in
+  // the order of `paths`, from the middle's raw totals).
+  void add_clock_systematic(const stats::Values& raw, const std::vector<std::string>& paths,
+                            const std::function<std::vector<double>(stats::Values)>& centre);
   // " ± 1.2%" for the statistic at `path` (relative), or "" when it has no interval.
   std::string pm(const std::string& path) const;
   std::string pm_points(const std::string& path) const;  // a ratio's: " ± 0.12 points"
@@ -74,6 +82,8 @@ class FrameReport {
   std::string treelet_lines(const std::string& ci) const;
   // An error target's lines: each named statistic's interval against it, and why one was missed.
   std::string target_lines() const;
+  // |samples' frame time - clock| / clock when it is in the intervals, else 0.
+  double clock_systematic_relative() const;
   // The relative half-width a statistic reached, or -1 when it has no interval.
   double target_reached(const std::string& path) const;
 };
