@@ -104,6 +104,11 @@ class Chip : public sc_core::sc_module {
   const stats::Group& statistics() const { return stats_; }
   // Sampled timing: the windows' samples for the confidence intervals (null in other modes).
   const stats::BatchMeans* window_batches() const { return sampler_ ? &sampler_->batches() : nullptr; }
+  // Sampled timing with an error target: the named statistics the plan left out as out of reach.
+  const std::vector<WindowSampler::OutOfReach>& targets_out_of_reach() const {
+    static const std::vector<WindowSampler::OutOfReach> none;
+    return sampler_ ? sampler_->out_of_reach() : none;
+  }
 
  private:
   void load(const FrameInputs& inputs, const iss::ElfImage& elf);

@@ -454,14 +454,17 @@ std::string FrameReport::target_lines() const {
   const double target = cfg.timing.sample_target_error;
   const auto label = [](const std::string& path) { return path == "frame.cycles" ? std::string("frame cycles") : path; };
   std::string s, missed, unshrinkable;
+  std::vector<std::string> missed_paths;
   for (const std::string& path : sampling::sample_target_list(cfg.timing.sample_target_stats)) {
     const double got = target_reached(path);
     if (got >= 0 && got <= target)
       s += format("target         %s \u00b1 %.1f%% asked, \u00b1 %.2f%% reached [sampled]\n", label(path).c_str(),
                   100 * target, 100 * got);
-    else
+    else {
+      missed_paths.push_back(path);
       missed += format("%s%s \u00b1 %.1f%% asked, %s reached", missed.empty() ? "" : "; ", label(path).c_str(),
                        100 * target, got >= 0 ? format("\u00b1 %.2f%%", 100 * got).c_str() : "no interval");
+    }
     // A systematic part the windows cannot shrink: say so rather than blame the period.
     const auto sys = clock_systematic_.find(path);
     const double v = std::fabs(values_.number(path));
@@ -472,11 +475,23 @@ std::string FrameReport::target_lines() const {
   const uint64_t last = sm.count("last_period_cycles"), shortest = sm.count("min_period_cycles");
   s += format("target         the period ended at %llu cycles after %llu change(s), planned for the widest of %s [sampled]\n",
               ull(last), ull(sm.count("period_changes")), cfg.timing.sample_target_stats.c_str());
+  // Targets the plan left out as out of reach: said first, with when and what they needed.
+  std::string left_out;
+  for (const WindowSampler::OutOfReach& o : chip_.targets_out_of_reach())
+    left_out += format("%s%s at cycle %llu (projected then to end at \u00b1 %.2f%% even so)", left_out.empty() ? "" : ", ",
+                       label(o.stat).c_str(), ull(o.cycle), 100 * o.best);
+  if (!left_out.empty())
+    s += format("target         out of reach at the shortest period (%llu cycles), left out of the plan: %s; the "
+                "windows were planned for the others%s [sampled]\n",
+                ull(shortest), left_out.c_str(),
+                chip_.targets_out_of_reach().size() == sampling::sample_target_list(cfg.timing.sample_target_stats).size()
+                    ? " (none left: the configured period)"
+                    : "");
   if (missed.empty()) return s;
   // Why: the period reached its shortest (the frame ended first), or the sampler still had
   // room to shorten it, so its last plan expected the target met.
   const uint64_t windows = sm.count("windows");
-  const std::string why =
+  std::string why =
       windows < WindowSampler::kPilotWindows
           ? format("no plan was possible: the frame held %llu window(s) before its last, and the sampler plans after "
                    "%zu (lower timing.sample_period_cycles, or use timing.mode=lt for this frame)",
@@ -489,12 +504,33 @@ std::string FrameReport::target_lines() const {
                    "shortest allowed, %llu), but the frame's final interval came out wider: run again with a "
                    "tighter target, or accept the wider interval",
                    ull(last), ull(shortest));
+  // Each missed statistic for its own reason: its interval's systematic part alone is wider than
+  // the target, the plan left it out as out of reach, or the windows ran out (`why`).
+  std::vector<std::string> reasons;
   if (!unshrinkable.empty())
-    return s + format("warning        the error target was not met: %s; the clock's systematic error alone (%s: the "
-                      "simulated clock against the samples' frame time) is wider than the target, and more windows "
-                      "do not shrink it: use timing.mode=lt for this frame, or accept the wider interval\n",
-                      missed.c_str(), unshrinkable.c_str());
-  return s + format("warning        the error target was not met: %s; %s\n", missed.c_str(), why.c_str());
+    reasons.push_back("the clock's systematic error alone (" + unshrinkable +
+                      ": the simulated clock against the samples' frame time) is wider than the target, and more "
+                      "windows do not shrink it");
+  bool others = false, any_left_out = false;
+  for (const std::string& path : missed_paths) {
+    const auto& gone = chip_.targets_out_of_reach();
+    const bool left = std::any_of(gone.begin(), gone.end(), [&](const WindowSampler::OutOfReach& o) { return o.stat == path; });
+    const auto sys = clock_systematic_.find(path);
+    const double v = std::fabs(values_.number(path));
+    const bool systematic = sys != clock_systematic_.end() && v > 0 && sys->second / v >= target;
+    any_left_out = any_left_out || (left && !systematic);
+    others = others || (!left && !systematic);
+  }
+  if (any_left_out)
+    reasons.push_back("those left out of the plan were out of reach at the shortest period, and no windows were spent "
+                      "on them");
+  if (others) reasons.push_back(why);
+  std::string all;
+  for (const std::string& r : reasons) all += (all.empty() ? "" : "; ") + r;
+  if (others) return s + format("warning        the error target was not met: %s; %s\n", missed.c_str(), all.c_str());
+  return s + format("warning        the error target was not met: %s; %s: use timing.mode=lt for this frame, or accept "
+                    "the wider interval\n",
+                    missed.c_str(), all.c_str());
 }
 
 std::string FrameReport::treelet_lines(const std::string& ci) const {

@@ -123,6 +123,10 @@ void Chip::register_stats() {
             Unit::kCycles,
             "The frame's last cycles, from the window after the pixels left fell to timing.sample_drain_share, timed in "
             "full as a stratum of their own (0: no drain stratum).");
+    s.level("targets_out_of_reach", [this] { return uint64_t{sampler_ ? sampler_->out_of_reach().size() : 0}; },
+            Unit::kCount,
+            "Statistics of timing.sample_target_stats whose target the shortest period could not reach: the plan "
+            "left them out (their intervals are what the other targets' windows give).");
     s.level("min_period_cycles", [this] { return sampler_ ? sampler_->min_period() : uint64_t{0}; },
             Unit::kCycles, "The shortest period an error target may choose (0: no sampler).");
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },

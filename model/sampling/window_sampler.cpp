@@ -23,6 +23,7 @@ WindowSampler::WindowSampler(sc_core::sc_module_name name, const TimingConfig& t
   targets_ = target_stats(timing_, stats::Values::snapshot(root_));
   windows_.resize(targets_.size());
   last_counts_.assign(targets_.size(), 0.0);
+  in_plan_.assign(targets_.size(), true);
   SC_THREAD(run);
 }
 
@@ -208,6 +209,17 @@ std::vector<double> WindowSampler::relative_half_widths(uint64_t now, const stat
   return relative;
 }
 
+double WindowSampler::planned_frame_cycles(double now, double fraction,
+                                           const std::vector<std::pair<double, double>>& history) {
+  const double paced = now / std::min(1.0, fraction);
+  if (history.empty()) return paced;
+  // The pace over the last kRecentWindows plans (or all, if fewer).
+  const auto& [then, done_then] = history[history.size() - std::min(history.size(), kRecentWindows)];
+  const double pace = now > then ? (fraction - done_then) / (now - then) : 0.0;
+  if (!(pace > 0)) return paced;
+  return std::min(paced, now + (1.0 - std::min(1.0, fraction)) / pace);
+}
+
 double WindowSampler::spread_weight(const std::vector<Window>& windows, size_t recent, stats::IntervalMethod method) {
   double c = 0, m = 0;
   for (const Window& w : windows) {
@@ -286,20 +298,56 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
   // Planned to a little inside the target: the half-width so far is itself an estimate, from
   // at most 32 batches (a relative standard error of about 1 / sqrt(2 x 31) = 13%), and a plan
   // that aims at the target exactly misses it about half the time.
+  // A target out of reach: even windows at the shortest period to the frame's end would leave
+  // its interval wider than asked, for the frame as long as its pace so far projects (the longer
+  // of the two projections: more windows to come).
+  // The plan then leaves it out for good, rather than paying for the shortest period to the
+  // frame's end and missing it anyway; the report says so. With none left in the plan, the
+  // configured period: a missed target costs no more than the default windows.
   const double target = kPlanningMargin * timing_.sample_target_error;
   const double base = double(timing_.sample_period_cycles);
-  const double frame = double(now) / std::min(1.0, fraction);
-  const double remaining_cycles = std::max(0.0, frame - double(now));
-  const double remaining = remaining_cycles / base;
-  double chosen = std::numeric_limits<double>::infinity();
-  for (size_t k = 0; k < targets_.size(); ++k) {
-    if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
+  const double paced = double(now) / std::min(1.0, fraction);
+  const double planned = planned_frame_cycles(double(now), fraction, paces_);
+  paces_.emplace_back(double(now), fraction);
+  const auto period_for = [&](size_t k, double frame) {
+    const double remaining = std::max(0.0, frame - double(now)) / base;
     const double gain = target * (frame / base) / (relative[k] * (head_weight_ + weight_sum_));
     const double weight =
         remaining > 0 ? spread_weight(windows_[k], kRecentWindows, timing_.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
-    chosen = std::min(chosen, std::max(0.0, weight) * base);
+    return std::max(0.0, weight) * base;
+  };
+  // The relative half-width the frame would end with at windows of `period` from here on (the
+  // plan's relation solved the other way).
+  const auto reach_at = [&](size_t k, double frame, double period) {
+    const double remaining = std::max(0.0, frame - double(now)) / base;
+    const double spread = spread_weight(windows_[k], kRecentWindows, timing_.sample_interval);
+    const double grow = spread > 0 ? std::sqrt(1.0 + remaining * (period / base) / spread) : 1.0;
+    return relative[k] * (head_weight_ + weight_sum_) / (frame / base) * grow;
+  };
+  double chosen = std::numeric_limits<double>::infinity();
+  bool any_in_plan = false;
+  for (size_t k = 0; k < targets_.size(); ++k) {
+    if (!in_plan_[k]) continue;
+    any_in_plan = true;
+    if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
+    if (windows_[k].size() >= kReachWindows) {
+      // Judged against the target asked, not the plan's margin inside it.
+      const double best = reach_at(k, paced, double(min_period()));
+      if (best > timing_.sample_target_error) {
+        in_plan_[k] = false;
+        out_of_reach_.push_back({targets_[k], now, best});
+        continue;
+      }
+    }
+    chosen = std::min(chosen, period_for(k, planned));
   }
-  if (!std::isfinite(chosen)) return;
+  if (!std::isfinite(chosen)) {
+    if (any_in_plan && std::none_of(in_plan_.begin(), in_plan_.end(), [](bool b) { return b; }))
+      chosen = base;  // the last target just left the plan
+    else
+      return;
+  }
+  const double frame = planned;
   const uint64_t period =
       std::clamp<uint64_t>(static_cast<uint64_t>(std::min(chosen, 1e18)), min_period(),
                            std::max(min_period(), max_period(frame)));

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 #include <systemc>
 
@@ -71,6 +72,28 @@ class WindowSampler : public sc_core::sc_module {
   static constexpr double kPlanningMargin = 0.85;  // plans for 85% of the target (retarget)
   static constexpr size_t kRecentWindows = 8;      // whose spread predicts the windows to come
 
+  // A named statistic whose target the shortest period cannot reach, even if the frame runs as
+  // long as its pixels so far project: the plan leaves it out from `cycle` on (docs/sampled-
+  // timing.md, "A target out of reach"), so it costs no more windows than the configured
+  // period gives. `best`: the relative half-width the shortest period would have ended with,
+  // as projected then.
+  struct OutOfReach {
+    std::string stat;
+    uint64_t cycle;
+    double best;
+  };
+  const std::vector<OutOfReach>& out_of_reach() const { return out_of_reach_; }
+  // Windows after which a target may be judged out of reach: the pilot, then enough windows for
+  // their spread to rest on kRecentWindows of the planned ones.
+  static constexpr size_t kReachWindows = kPilotWindows + kRecentWindows;
+  // The frame's length for the plan, from the share of pixels done: `now / fraction` (the pace
+  // so far), or, when pixels finish faster lately than on average (a STRaTA frame, whose first
+  // paths take many bounces before any pixel is done), `now` plus the rest at the recent pace,
+  // whichever is shorter. Planning for a frame longer than it is leaves too few windows (a
+  // 128x128 frame projected at 1.0 M cycles ended at 0.67 M). `history`: (cycle, fraction)
+  // at earlier windows, oldest first.
+  static double planned_frame_cycles(double now, double fraction, const std::vector<std::pair<double, double>>& history);
+
   // One window's weight and, for one target statistic, its measured count (its measured part,
   // not scaled by its weight) and the measured instructions it came with.
   struct Window {
@@ -118,6 +141,9 @@ class WindowSampler : public sc_core::sc_module {
   std::vector<double> last_counts_;
   double last_measured_ = 0;  // measured instructions at the last snapshot
   double weight_sum_ = 0;     // of the windows so far
+  std::vector<bool> in_plan_;                      // per target: not (yet) out of reach
+  std::vector<OutOfReach> out_of_reach_;
+  std::vector<std::pair<double, double>> paces_;  // (cycle, share of pixels done) at each plan
   double head_weight_ = 0;    // the head's span, in configured periods (0: no head)
 };
 

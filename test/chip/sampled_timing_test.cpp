@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/sampling/window_sampler.h"
 #include "test/support/test_files.h"
 
 namespace {
@@ -20,18 +21,21 @@ namespace {
 namespace fs = std::filesystem;
 using strata::sim::testing::read_text;
 using strata::sim::testing::TempDir;
+using strata::sampling::WindowSampler;
 
-// Small windows, so a 32x32 frame on two TMs spans hundreds of sampling periods.
+// Small windows, so a 32x32 frame (run_frame's, unless `extra` names another) on two TMs spans
+// hundreds of sampling periods.
 const char* kSmallChip =
     " --set tms=2 --set tps_per_tm=8 --set memory.stream.size_bytes=524288 --set timing.quantum_cycles=500"
     " --set timing.sample_period_cycles=6000 --set timing.sample_detail_cycles=3000"
-    " --set timing.sample_warmup_cycles=1000 --scene cornell:size=0.2 --res 32x32 --quiet --check";
+    " --set timing.sample_warmup_cycles=1000 --scene cornell:size=0.2 --quiet --check";
 
 nlohmann::json run_frame(const TempDir& dir, const std::string& design, const std::string& mode,
                          const std::string& tag = "", const std::string& extra = "") {
   const fs::path out = dir.path() / (design + "-" + mode + tag);
   const std::string cmd = std::string("'") + STRATA_SIM_EXE + "' run --config '" + STRATA_SOURCE_DIR +
-                          "/sim/configs/" + design + ".json' --set timing.mode=" + mode + kSmallChip + extra + " --out '" +
+                          "/sim/configs/" + design + ".json' --set timing.mode=" + mode + kSmallChip +
+                          (extra.find("--res ") == std::string::npos ? " --res 32x32" : "") + extra + " --out '" +
                           out.string() + "' >'" + (dir.path() / "log.txt").string() + "' 2>&1";
   const int status = std::system(cmd.c_str());
   EXPECT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
@@ -181,13 +185,17 @@ TEST_P(SampledTiming, ATargetWithinReachTimesLessThanTheConfiguredPeriod) {
   EXPECT_LE(std::abs(cycles - fixed["frame"]["cycles"].get<double>()), half_width + fixed_half_width);
 }
 
-// A target the frame cannot reach drives the period down to the shortest the sampler allows,
-// and the summary says the target was missed and why (the frame ended first).
-TEST_P(SampledTiming, AnUnreachableTargetIsReportedAsMissed) {
+// A target the frame cannot reach, on a frame too short for the plan to judge it out of reach
+// (fewer than kReachWindows windows), drives the period down to the shortest the sampler
+// allows, and the summary says the target was missed and why (the frame ended first).
+TEST(SampledTimingTargets, AnUnreachableTargetOnAShortFrameIsReportedAsMissed) {
   TempDir dir;
-  const nlohmann::json j = run_frame(dir, GetParam(), "sampled", "-unreachable", " --set timing.sample_target_error=0.001");
+  const nlohmann::json j =
+      run_frame(dir, "strata-pipelines", "sampled", "-unreachable", " --set timing.sample_target_error=0.001 --res 8x8");
   ASSERT_FALSE(j.is_null());
   const auto& s = j["sampling"];
+  ASSERT_LT(s["windows"].get<size_t>(), WindowSampler::kReachWindows) << "the frame should be too short for a verdict";
+  EXPECT_EQ(s["targets_out_of_reach"].get<int>(), 0);
   EXPECT_GT(s["min_period_cycles"].get<double>(), s["detail_cycles"].get<double>());
   EXPECT_EQ(s["last_period_cycles"], s["min_period_cycles"]);
   const double reached = j["intervals"]["stats"]["frame"]["cycles"]["relative"].get<double>();
@@ -200,16 +208,48 @@ TEST_P(SampledTiming, AnUnreachableTargetIsReportedAsMissed) {
   EXPECT_EQ(summary.find("target         frame cycles"), std::string::npos) << summary;
 }
 
+// A target the shortest period cannot reach is left out of the plan once the windows show it
+// (issue 38, part 3): the frame goes back to the configured period instead of paying for the
+// shortest to its end and missing anyway, and the summary says which target, when, and why.
+TEST_P(SampledTiming, ATargetOutOfReachCostsNoMoreThanTheConfiguredWindows) {
+  TempDir dir;
+  const std::string longer = " --set timing.sample_period_cycles=30000";
+  const nlohmann::json plain = run_frame(dir, GetParam(), "sampled", "-plain", longer);
+  const nlohmann::json j = run_frame(dir, GetParam(), "sampled", "-reach",
+                                     longer + " --set timing.sample_target_error=0.001"
+                                              " --set timing.sample_target_stats=memory.dram.bytes");
+  ASSERT_FALSE(plain.is_null() || j.is_null());
+  const std::string summary = read_text(dir.path() / "log.txt");
+  const auto& s = j["sampling"];
+  EXPECT_EQ(s["targets_out_of_reach"].get<int>(), 1) << summary;
+  EXPECT_EQ(s["last_period_cycles"].get<double>(), 30000.0) << summary;  // back to the configured period
+  // The pilot and the windows before the verdict run at the shortest period; the rest as
+  // without a target. Far less timed than at the shortest period throughout (about half).
+  const double timed = s["timed_instructions"].get<double>() / j["instructions"]["retired"].get<double>();
+  const double plain_timed =
+      plain["sampling"]["timed_instructions"].get<double>() / plain["instructions"]["retired"].get<double>();
+  EXPECT_LT(timed, 0.3) << summary;
+  EXPECT_LT(timed, plain_timed + 0.15) << summary;
+  EXPECT_FALSE(j["intervals"]["target"]["stats"]["memory.dram.bytes"]["met"].get<bool>());
+  EXPECT_NE(summary.find("out of reach at the shortest period ("), std::string::npos) << summary;
+  EXPECT_NE(summary.find("left out of the plan: memory.dram.bytes at cycle "), std::string::npos) << summary;
+  EXPECT_NE(summary.find("(none left: the configured period)"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("no windows were spent on them: use timing.mode=lt"), std::string::npos) << summary;
+}
+
 // The target holds for the statistics it names (issue 35, part 1). DRAM bytes vary between this
 // frame's windows several times more than its cycles do, so a target on DRAM bytes times more
 // of the frame than the same target on cycles alone; the summary and stats.json say, per
-// statistic, whether the target was met.
-TEST_P(SampledTiming, ATargetOnDramBytesTimesMoreThanOneOnCyclesAlone) {
+// statistic, whether the target was met. TRaX, at 30%: a DRAM target this frame can just reach
+// (±29.9%; the plan judges it out of reach only late in the frame, at a projected ±30.3%). At
+// 10%, and on strata-pipelines at 30%, it is out of reach early and left out of the plan
+// (ATargetOutOfReachCostsNoMoreThanTheConfiguredWindows).
+TEST(SampledTimingTargets, ATargetOnDramBytesTimesMoreThanOneOnCyclesAlone) {
   TempDir dir;
-  const std::string target = " --set timing.sample_target_error=0.1 --set timing.sample_target_stats=";
-  const nlohmann::json cycles = run_frame(dir, GetParam(), "sampled", "-cycles", target + "frame.cycles");
+  const std::string target = " --set timing.sample_target_error=0.3 --set timing.sample_target_stats=";
+  const nlohmann::json cycles = run_frame(dir, "trax", "sampled", "-cycles", target + "frame.cycles");
   const std::string cycles_log = read_text(dir.path() / "log.txt");
-  const nlohmann::json dram = run_frame(dir, GetParam(), "sampled", "-dram", target + "frame.cycles,memory.dram.bytes");
+  const nlohmann::json dram = run_frame(dir, "trax", "sampled", "-dram", target + "frame.cycles,memory.dram.bytes");
   const std::string dram_log = read_text(dir.path() / "log.txt");
   ASSERT_FALSE(cycles.is_null() || dram.is_null());
   EXPECT_EQ(cycles["rays"], dram["rays"]);
@@ -227,17 +267,17 @@ TEST_P(SampledTiming, ATargetOnDramBytesTimesMoreThanOneOnCyclesAlone) {
   // (docs/sampled-timing.md, "STRaTA's memory bias", the frame's head).
   // Per named statistic: stats.json's intervals.target, and a line of the summary.
   const auto& t = dram["intervals"]["target"];
-  EXPECT_EQ(t["error"], 0.1);
+  EXPECT_EQ(t["error"], 0.3);
   ASSERT_TRUE(t["stats"].contains("memory.dram.bytes")) << t.dump();
   EXPECT_EQ(t["stats"].size(), 2u);
   for (const auto& [path, got] : t["stats"].items()) {
     const double reached = got["relative"].get<double>();
-    EXPECT_EQ(got["met"].get<bool>(), reached >= 0 && reached <= 0.1) << path;
+    EXPECT_EQ(got["met"].get<bool>(), reached >= 0 && reached <= 0.3) << path;
   }
   EXPECT_DOUBLE_EQ(t["stats"]["memory.dram.bytes"]["relative"].get<double>(), relative(dram, "/memory/dram/bytes"));
   const bool dram_met = t["stats"]["memory.dram.bytes"]["met"].get<bool>();
-  EXPECT_NE(dram_log.find(dram_met ? "target         memory.dram.bytes \u00b1 10.0% asked"
-                                   : "the error target was not met: memory.dram.bytes \u00b1 10.0% asked"),
+  EXPECT_NE(dram_log.find(dram_met ? "target         memory.dram.bytes \u00b1 30.0% asked"
+                                   : "the error target was not met: memory.dram.bytes \u00b1 30.0% asked"),
             std::string::npos)
       << dram_log;
   EXPECT_NE(dram_log.find("planned for the widest of frame.cycles,memory.dram.bytes"), std::string::npos) << dram_log;

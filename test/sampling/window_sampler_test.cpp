@@ -2,6 +2,7 @@
 // carry, in units of the spread the recent windows predict for the windows to come.
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "model/sampling/window_sampler.h"
@@ -83,6 +84,31 @@ TEST(WindowSampler, ATrendIsNotASpreadBySuccessiveDifferences) {
 namespace {
 
 // The window the frame ends in stands for the cycles from its start to the frame's end.
+// The plan's frame length: the pace so far, or the recent pace when pixels now finish faster
+// than on average (a STRaTA frame's first paths take many bounces before any pixel is done);
+// never longer than the pace so far.
+TEST(WindowSampler, TheFrameIsPlannedAtTheRecentPaceWhenItIsFaster) {
+  using History = std::vector<std::pair<double, double>>;
+  // No history: the pace so far, 40% done at 400,000 cycles.
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(400000, 0.4, {}), 1000000.0);
+  // A steady pace: the same.
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(400000, 0.4, History{{200000, 0.2}, {300000, 0.3}}), 1000000.0);
+  // Nothing done until 200,000 cycles, then 10% per 50,000: the rest (60%) at the recent pace.
+  const History late{{200000, 0.0}, {250000, 0.1}, {300000, 0.2}, {350000, 0.3}};
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(400000, 0.4, late), 400000.0 + 0.6 / (0.4 / 200000));
+  // The pace falling (a drain): the pace so far, the longer, is kept.
+  const History slowing{{100000, 0.2}, {200000, 0.35}, {300000, 0.38}};
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(400000, 0.4, slowing), 1000000.0);
+  // No progress lately: the pace so far.
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(400000, 0.4, History{{300000, 0.4}}), 1000000.0);
+  // Only the last kRecentWindows entries set the recent pace.
+  History many;
+  for (int i = 0; i < 20; ++i) many.push_back({10000.0 * i, i < 12 ? 0.0 : 0.025 * (i - 11)});
+  const auto& [then, done] = many[many.size() - WindowSampler::kRecentWindows];
+  EXPECT_DOUBLE_EQ(WindowSampler::planned_frame_cycles(200000, 0.25, many),
+                   200000.0 + 0.75 / ((0.25 - done) / (200000.0 - then)));
+}
+
 TEST(WindowSampler, TheTailWindowStandsForWhatIsLeftOfTheFrame) {
   strata::sampling::TimingConfig t;  // period 100,000 cycles
   strata::sampling::SamplingSchedule schedule(t);
