@@ -57,18 +57,22 @@ def interval(row, path):
     return value(row, f"intervals.stats.{path}.half_width")
 
 
+CLOCK_BOUND = 0.025  # timing.sample_clock_bound's default (model/sampling/timing_config.h)
+
+
 def frame_time_half_width(row):
-    """The frame time's half-width with the clock's systematic error in it (its disagreement with
-    the samples' estimate, docs/sampled-timing.md, "The frame time"), and where that came from:
-    "in run" (runs since 2026-12-07, intervals.frame_time_systematic), "recomputed" (a run that
-    published both frame times but not the term: the spread plus their difference), or
-    "none" (an older run: the spread alone)."""
+    """The frame time's half-width with the clock's systematic error in it (the larger of its
+    disagreement with the samples' estimate and timing.sample_clock_bound, docs/sampled-timing.md,
+    "The clock's error in the interval"), and where that came from: "in run" (runs since
+    2026-12-07, intervals.frame_time_systematic), "recomputed" (a run that published both frame
+    times but not the term: the spread plus that larger one, at the bound's default), or "none"
+    (an older run: the spread alone)."""
     hw = interval(row, "frame.cycles") or 0.0
     if value(row, "intervals.frame_time_systematic") is not None:
         return hw, "in run"
     clock, est = value(row, "intervals.simulated_frame_cycles"), value(row, "intervals.samples_frame_cycles")
     if clock and est and value(row, "frame.cycles") == clock:
-        return hw + abs(est - clock), "recomputed"
+        return hw + max(abs(est - clock), CLOCK_BOUND * clock), "recomputed"
     return hw, "none"
 
 
@@ -116,7 +120,8 @@ def main():
                     spread_only.append(key)
                 elif source == "recomputed":
                     print(f"recomputed: {' '.join(map(str, key))}: the frame time's interval is the run's spread plus "
-                          f"|samples' estimate - clock| (the run predates intervals.frame_time_systematic)")
+                          f"the larger of |samples' estimate - clock| and {CLOCK_BOUND:.1%} of the clock (the run predates "
+                          f"intervals.frame_time_systematic)")
             err = e - r
             ok = abs(err) <= hw
             inside[label] = inside.get(label, 0) + ok

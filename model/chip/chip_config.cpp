@@ -140,6 +140,7 @@ std::vector<std::string> sampled_only_fields_changed(const TimingConfig& t) {
   check(t.sample_target_error != d.sample_target_error, "timing.sample_target_error");
   check(t.sample_target_stats != d.sample_target_stats, "timing.sample_target_stats");
   check(t.sample_interval != d.sample_interval, "timing.sample_interval");
+  check(t.sample_clock_bound != d.sample_clock_bound, "timing.sample_clock_bound");
   return out;
 }
 
@@ -174,6 +175,7 @@ void ChipConfig::bind(ConfigBinder& b) {
   b.bind("timing.sample_target_stats", &timing.sample_target_stats);
   // The names in IntervalMethod's order.
   b.bind_enum("timing.sample_interval", &timing.sample_interval, {"jackknife", "successive"});
+  b.bind("timing.sample_clock_bound", &timing.sample_clock_bound);
 
   auto& tp = tm.tp;
   b.bind("tm.tp.int_alu_latency", &tp.int_alu_latency);
@@ -280,6 +282,8 @@ void ChipConfig::finalize() {
               (timing.sample_target_error >= 0.001 && timing.sample_target_error <= 0.5),
           "timing.sample_target_error: 0 (off) or a relative half-width in [0.001, 0.5], got " +
               real(timing.sample_target_error));
+  require(timing.sample_clock_bound >= 0.0 && timing.sample_clock_bound <= 0.5,
+          "timing.sample_clock_bound: a relative error in [0, 0.5], got " + real(timing.sample_clock_bound));
   try {  // its syntax; the names are checked against the tree when the sampler is built
     (void)sampling::sample_target_list(timing.sample_target_stats);
   } catch (const std::invalid_argument& e) {

@@ -521,9 +521,9 @@ TEST(SampledTimingIntervals, TheMethodChangesTheIntervalsNotTheEstimates) {
 }
 
 // The frame time is the simulated clock; its own error (the windows' warm-ups and the
-// fast-forward's rates, docs/sampled-timing.md, "The frame time") is bounded by its disagreement
-// with the samples' estimate, which the interval of the frame time, and of the rates that follow
-// from it, includes. Counts do not depend on the frame time and keep their intervals. On this
+// fast-forward's rates, docs/sampled-timing.md, "The frame time") is taken as the larger of its
+// disagreement with the samples' estimate and timing.sample_clock_bound, and the interval of the
+// frame time, and of the rates that follow from it, includes it. Counts do not depend on the frame time and keep their intervals. On this
 // frame (many TPs for few rays: the fast-forward's polls make the two disagree by several
 // percent) a 2% target on frame cycles cannot be met, and the summary says the systematic part
 // is why, not the period.
@@ -555,6 +555,16 @@ TEST(SampledTimingIntervals, TheClocksErrorIsInTheFrameTimesInterval) {
   EXPECT_FALSE(iv["target"]["stats"]["frame.cycles"]["met"].get<bool>());
   EXPECT_NE(summary.find("the clock's systematic error alone (frame cycles \u00b1 "), std::string::npos) << summary;
   EXPECT_NE(summary.find("the samples estimate "), std::string::npos) << summary;
+  EXPECT_GT(std::fabs(samples / clock - 1), 0.025) << "the disagreement should exceed the default bound here";
+  // A bound above the disagreement sets the systematic part instead (both frames are the same run
+  // but for the report).
+  const nlohmann::json bounded =
+      run_frame(dir, "strata-pipelines", "sampled", "-bound", frame + " --set timing.sample_clock_bound=0.3");
+  ASSERT_FALSE(bounded.is_null());
+  EXPECT_EQ(bounded["frame"]["cycles"], j["frame"]["cycles"]);
+  EXPECT_NEAR(bounded["intervals"]["frame_time_systematic"].get<double>(), 0.3, 1.0 / clock);
+  EXPECT_NEAR(bounded["intervals"]["stats"]["frame"]["cycles"]["clock_systematic"].get<double>(), 0.3 * clock, 1.0);
+  EXPECT_EQ(bounded["intervals"]["stats"]["memory"]["dram"]["bytes"], j["intervals"]["stats"]["memory"]["dram"]["bytes"]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Chip, SampledTiming, ::testing::Values("trax", "strata-pipelines"), design_name);
