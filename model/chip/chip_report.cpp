@@ -487,8 +487,12 @@ std::string FrameReport::target_lines() const {
   // Targets the plan left out as out of reach: said first, with when and what they needed.
   std::string left_out;
   for (const WindowSampler::OutOfReach& o : chip_.targets_out_of_reach())
-    left_out += format("%s%s at cycle %llu (projected then to end at \u00b1 %.2f%% even so)", left_out.empty() ? "" : ", ",
-                       label(o.stat).c_str(), ull(o.cycle), 100 * o.best);
+    left_out += o.cycle == 0
+                    ? format("%s%s from the start (its interval holds the clock's own error, at least "
+                             "timing.sample_clock_bound = \u00b1 %.2f%%)",
+                             left_out.empty() ? "" : ", ", label(o.stat).c_str(), 100 * o.best)
+                    : format("%s%s at cycle %llu (projected then to end at \u00b1 %.2f%% even so)",
+                             left_out.empty() ? "" : ", ", label(o.stat).c_str(), ull(o.cycle), 100 * o.best);
   if (!left_out.empty())
     s += format("target         out of reach at the shortest period (%llu cycles), left out of the plan: %s; the "
                 "windows were planned for the others%s [sampled]\n",

@@ -24,6 +24,15 @@ WindowSampler::WindowSampler(sc_core::sc_module_name name, const TimingConfig& t
   windows_.resize(targets_.size());
   last_counts_.assign(targets_.size(), 0.0);
   in_plan_.assign(targets_.size(), true);
+  // The frame time's interval holds the clock's own error, at least timing.sample_clock_bound,
+  // whatever the windows (docs/sampled-timing.md, "The clock's error in the interval"): a target
+  // on frame cycles no wider than that is out of reach from the start.
+  if (timing_.sample_target_error > 0)
+    for (size_t k = 0; k < targets_.size(); ++k)
+      if (targets_[k] == "frame.cycles" && timing_.sample_target_error <= timing_.sample_clock_bound) {
+        in_plan_[k] = false;
+        out_of_reach_.push_back({targets_[k], 0, timing_.sample_clock_bound});
+      }
   SC_THREAD(run);
 }
 
@@ -144,7 +153,8 @@ void WindowSampler::run() {
     // An error target's pilot runs at the shortest period: at the configured one, its windows
     // weighed 4.5 times those of the period the plan then chose, and the first batch moved
     // STRaTA's DRAM estimate by 4.2% at 512x512 where a middle batch moves it by under 1%.
-    if (timing_.sample_target_error > 0 && batches_.windows() == (schedule_.has_head() ? 0u : 1u))
+    if (timing_.sample_target_error > 0 && batches_.windows() == (schedule_.has_head() ? 0u : 1u) &&
+        std::any_of(in_plan_.begin(), in_plan_.end(), [](bool b) { return b; }))
       schedule_.change_period(schedule_.next_window(window),
                               std::min<uint64_t>(min_period(), timing_.sample_period_cycles));
     // The drain: once every pixel has been handed out (the rays in flight fall from then on)
@@ -309,9 +319,16 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
   const double paced = double(now) / std::min(1.0, fraction);
   const double planned = planned_frame_cycles(double(now), fraction, paces_);
   paces_.emplace_back(double(now), fraction);
+  // The frame time's interval holds the clock's error bound beside the spread: its spread is
+  // planned to what the target leaves of it.
+  const auto spread_target = [&](size_t k) {
+    return targets_[k] == "frame.cycles"
+               ? kPlanningMargin * std::max(0.0, timing_.sample_target_error - timing_.sample_clock_bound)
+               : target;
+  };
   const auto period_for = [&](size_t k, double frame) {
     const double remaining = std::max(0.0, frame - double(now)) / base;
-    const double gain = target * (frame / base) / (relative[k] * (head_weight_ + weight_sum_));
+    const double gain = spread_target(k) * (frame / base) / (relative[k] * (head_weight_ + weight_sum_));
     const double weight =
         remaining > 0 ? spread_weight(windows_[k], kRecentWindows, timing_.sample_interval) * (gain * gain - 1.0) / remaining : 0.0;
     return std::max(0.0, weight) * base;
@@ -332,7 +349,9 @@ void WindowSampler::retarget(uint64_t now, const stats::Values& cumulative) {
     if (!(relative[k] > 0)) continue;  // no interval yet, or an exact figure
     if (windows_[k].size() >= kReachWindows) {
       // Judged against the target asked, not the plan's margin inside it.
-      const double best = reach_at(k, paced, double(min_period()));
+      // The frame time's interval also holds the clock's error, at least the bound.
+      const double best = reach_at(k, paced, double(min_period())) +
+                          (targets_[k] == "frame.cycles" ? timing_.sample_clock_bound : 0.0);
       if (best > timing_.sample_target_error) {
         in_plan_[k] = false;
         out_of_reach_.push_back({targets_[k], now, best});
