@@ -430,6 +430,12 @@ std::string FrameReport::summary() const {
     else if (simulated_cycles_ > 0)
       s += format("frame time     the simulated clock, %llu cycles, its warm-ups and fast-forwards included [sampled]\n",
                   ull(static_cast<uint64_t>(simulated_cycles_)));
+    if (sm.count("short_frame_rest_cycles") > 0)
+      s += format("note           too short for sampling: near its head's end the frame was projected to run %llu "
+                  "more cycles, fewer than %.0f periods of %llu, so all of it was timed in full, as LT times it "
+                  "[sampled]\n",
+                  ull(sm.count("short_frame_rest_cycles")), WindowSampler::kShortFramePeriods,
+                  ull(sm.count("period_cycles")));
     if (sm.count("head_cycles") > 0 || sm.count("drain_cycles") > 0)
       s += format("strata         head %llu cycles, drain %llu cycles: timed in full and estimated apart from the "
                   "sampled middle [sampled]\n",

@@ -127,6 +127,10 @@ void Chip::register_stats() {
             Unit::kCount,
             "Statistics of timing.sample_target_stats whose target the shortest period could not reach: the plan "
             "left them out (their intervals are what the other targets' windows give).");
+    s.level("short_frame_rest_cycles", [this] { return sampler_ ? sampler_->short_frame_rest() : uint64_t{0}; },
+            Unit::kCycles,
+            "The rest of the frame, as projected shortly before its head's end, when that was fewer than 8 "
+            "configured periods: the whole frame was then timed in full, as LT times it (0: it was sampled).");
     s.level("min_period_cycles", [this] { return sampler_ ? sampler_->min_period() : uint64_t{0}; },
             Unit::kCycles, "The shortest period an error target may choose (0: no sampler).");
     s.level("functional_warming", [this] { return uint64_t{config_.timing.functional_warming ? 1u : 0u}; },

@@ -35,6 +35,9 @@ class SamplingSchedule {
     head_ = true;
   }
   bool has_head() const { return head_; }
+  // The head lasts until the frame ends: every cycle detailed and measured, as LT times them (a
+  // frame too short for sampling, window_sampler.h). Before any TM has passed the head's end.
+  void extend_head_to_end() { segments_.assign({{0, kForever, kForever, 0}}); }
 
   // The first cycle of the window `t` lies in.
   Cycle window_of(Cycle t) const {

@@ -93,6 +93,12 @@ class WindowSampler : public sc_core::sc_module {
   // 128x128 frame projected at 1.0 M cycles ended at 0.67 M). `history`: (cycle, fraction)
   // at earlier windows, oldest first.
   static double planned_frame_cycles(double now, double fraction, const std::vector<std::pair<double, double>>& history);
+  // A frame whose rest after its head projects to fewer configured periods than this is timed
+  // in full, as LT times it: so few windows give no useful interval.
+  static constexpr double kShortFramePeriods = 8;
+  // The rest of the frame as projected shortly before its head's end, when that made it too
+  // short for sampling (0: it was sampled).
+  uint64_t short_frame_rest() const { return short_frame_rest_; }
 
   // One window's weight and, for one target statistic, its measured count (its measured part,
   // not scaled by its weight) and the measured instructions it came with.
@@ -119,6 +125,8 @@ class WindowSampler : public sc_core::sc_module {
 
  private:
   void run();
+  // A frame too short for sampling is timed in full from its start; true if it was.
+  bool time_short_frame_in_full(uint32_t id);
   // The drain, from the window `from` on, timed in full: wait for the frame's end.
   void finish_drain(uint32_t id, uint64_t from);
   void retarget(uint64_t now, const stats::Values& cumulative);
@@ -144,6 +152,7 @@ class WindowSampler : public sc_core::sc_module {
   std::vector<bool> in_plan_;                      // per target: not (yet) out of reach
   std::vector<OutOfReach> out_of_reach_;
   std::vector<std::pair<double, double>> paces_;  // (cycle, share of pixels done) at each plan
+  uint64_t short_frame_rest_ = 0;
   double head_weight_ = 0;    // the head's span, in configured periods (0: no head)
 };
 

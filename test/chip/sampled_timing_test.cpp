@@ -439,6 +439,30 @@ TEST_P(SampledTiming, AFrameThatEndsInItsHeadIsTimedAsLtTimesIt) {
       << summary;
 }
 
+// A frame whose rest, projected shortly before its head ends, is under 8 configured periods is
+// too short for sampling (issue 38, part 3): its windows would give an interval from a handful
+// of batches. It is timed in full from the start, exactly as LT times it, and the summary says
+// so. With a period half as long the same frame is sampled as before.
+TEST_P(SampledTiming, AFrameTooShortForSamplingIsTimedAsLtTimesIt) {
+  TempDir dir;
+  const nlohmann::json lt = run_frame(dir, GetParam(), "lt", "-short", " --res 16x16");
+  const nlohmann::json sampled =
+      run_frame(dir, GetParam(), "sampled", "-short", " --res 16x16 --set timing.sample_period_cycles=40000");
+  const std::string summary = read_text(dir.path() / "log.txt");
+  const nlohmann::json longer =
+      run_frame(dir, GetParam(), "sampled", "-longer", " --res 16x16 --set timing.sample_period_cycles=20000");
+  ASSERT_FALSE(lt.is_null() || sampled.is_null() || longer.is_null());
+  for (const char* part : {"frame", "rays", "memory", "xu", "energy_nj"}) EXPECT_EQ(sampled[part], lt[part]) << part;
+  EXPECT_EQ(sampled["sampling"]["timed_instructions"], sampled["instructions"]["retired"]);
+  const double rest = sampled["sampling"]["short_frame_rest_cycles"].get<double>();
+  EXPECT_GT(rest, 0.0);
+  EXPECT_LT(rest, 8 * 40000.0);
+  EXPECT_NE(summary.find("too short for sampling: near its head's end the frame was projected to run "), std::string::npos)
+      << summary;
+  EXPECT_EQ(longer["sampling"]["short_frame_rest_cycles"].get<double>(), 0.0);
+  EXPECT_LT(longer["sampling"]["timed_instructions"].get<double>(), longer["instructions"]["retired"].get<double>());
+}
+
 // The drain (docs/sampled-timing.md, "Head and drain strata"): once every pixel has been handed
 // out and at most a quarter are left to finish, the rest of the frame is one window timed in
 // full, estimated by its own ratio and in no batch. On this STRaTA frame every pixel is handed
