@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """interval_coverage.py compares a loosely-timed frame with its sampled twin only when both ran
-the same kernel image: the pairing, on rows as the sweep writes them."""
+the same kernel image (the pairing, on rows as the sweep writes them), with the clock's
+systematic error in the frame time's interval."""
 import os
 import sys
 import unittest
@@ -23,6 +24,28 @@ class SameKernelPairs(unittest.TestCase):
         self.assertEqual(pairs, [("streams", "b", "8x8", 1), ("trax", "a", "8x8", 1)])
         self.assertEqual(mismatched, [(("streams", "a", "8x8", 1), ("streams.elf 02", "streams.elf 03"))])
         self.assertEqual(unchecked, [("streams", "b", "8x8", 1)])
+
+
+class FrameTimeHalfWidth(unittest.TestCase):
+    """The frame time's half-width holds the clock's systematic error: as the run reported it, or
+    recomputed for a run that published both frame times but not the term."""
+
+    def test_a_run_with_the_term_is_taken_as_it_is(self):
+        r = {"frame.cycles [cycles]": 1000.0, "intervals.stats.frame.cycles.half_width [cycles]": 40.0,
+             "intervals.frame_time_systematic [ratio]": 0.025}
+        self.assertEqual(interval_coverage.frame_time_half_width(r), (40.0, "in run"))
+
+    def test_an_older_run_adds_the_larger_of_the_disagreement_and_the_bound(self):
+        base = {"frame.cycles [cycles]": 1000.0, "intervals.stats.frame.cycles.half_width [cycles]": 4.0,
+                "intervals.simulated_frame_cycles [cycles]": 1000.0}
+        close = dict(base, **{"intervals.samples_frame_cycles [cycles]": 1010.0})
+        far = dict(base, **{"intervals.samples_frame_cycles [cycles]": 1100.0})
+        self.assertEqual(interval_coverage.frame_time_half_width(close), (4.0 + 25.0, "recomputed"))
+        self.assertEqual(interval_coverage.frame_time_half_width(far), (4.0 + 100.0, "recomputed"))
+
+    def test_a_run_without_both_frame_times_keeps_its_spread(self):
+        r = {"frame.cycles [cycles]": 1000.0, "intervals.stats.frame.cycles.half_width [cycles]": 4.0}
+        self.assertEqual(interval_coverage.frame_time_half_width(r), (4.0, "none"))
 
 
 if __name__ == "__main__":
