@@ -414,12 +414,16 @@ std::string FrameReport::summary() const {
     const stats::Values& sm = v.group("sampling");
     const double timed = sm.number("timed_instructions");
     // With an error target the period moves (the target line says where it ended).
-    s += format("sampling       %.1f%% of instructions timed (%llu of every %llu cycles%s, %llu warm-up); memory "
-                "figures extrapolated x%.2f, XU x%.2f [sampled]\n",
-                retired > 0 ? 100.0 * timed / retired : 0.0, ull(sm.count("detail_cycles")),
-                ull(sm.count("period_cycles")), sm.count("period_changes") > 0 ? " at first" : "",
-                ull(sm.count("warmup_cycles")),
-                sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
+    if (sm.count("short_frame_rest_cycles") > 0)  // the note below says why
+      s += format("sampling       %.1f%% of instructions timed: the whole frame, no windows [sampled]\n",
+                  retired > 0 ? 100.0 * timed / retired : 0.0);
+    else
+      s += format("sampling       %.1f%% of instructions timed (%llu of every %llu cycles%s, %llu warm-up); memory "
+                  "figures extrapolated x%.2f, XU x%.2f [sampled]\n",
+                  retired > 0 ? 100.0 * timed / retired : 0.0, ull(sm.count("detail_cycles")),
+                  ull(sm.count("period_cycles")), sm.count("period_changes") > 0 ? " at first" : "",
+                  ull(sm.count("warmup_cycles")),
+                  sm.number("memory_extrapolation_factor"), sm.number("extrapolation_factor"));
     if (simulated_cycles_ > 0 && !clock_systematic_.empty())
       s += format("frame time     the simulated clock, %llu cycles, its warm-ups and fast-forwards included; the samples "
                   "estimate %llu (%+.2f%%); the clock's own error, the larger of that and %.1f%% (timing.sample_clock_bound), "
