@@ -37,6 +37,7 @@ void bind_dram_timing(ConfigBinder& b, const std::string& p, memory::DramTimingC
   b.bind(p + ".row_bytes", &t.row_bytes);
   b.bind(p + ".column_bytes", &t.column_bytes);
   b.bind(p + ".hash_banks", &t.hash_banks);
+  b.bind(p + ".pack_activates", &t.pack_activates);
   b.bind_enum(p + ".row_policy", &t.row_policy, {"open", "closed"});
   const std::pair<const char*, double*> times[] = {
       {"t_rcd_ns", &t.t_rcd_ns},     {"t_rp_ns", &t.t_rp_ns},       {"t_cl_ns", &t.t_cl_ns},

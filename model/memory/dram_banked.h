@@ -15,8 +15,10 @@
 // kept in call order: a bank serves its requests first come, first served in the order they
 // arrive, except that a request earlier in time than the bank's latest ACT, whose own row
 // cycle fits before it, is served there without touching that state. Refresh is applied
-// lazily when a request reaches a refresh that fell due. FR-FCFS over a bounded queue (row hits first) is not done yet; docs/memory-system.md,
-// "Banked DRAM".
+// lazily when a request reaches a refresh that fell due. Activates are packed (packed_act) so
+// that the gaps booking in arrival order leaves between them hold whole tRRD slots, as a
+// controller with a queue fills them. A queue that reorders requests already answered (row
+// hits first) cannot be modelled this way; docs/memory-system.md, "Banked DRAM".
 //
 // The class is plain C++ (no SystemC): Dram owns one and calls it from b_transport.
 #pragma once
@@ -136,6 +138,8 @@ class BankedDram {
   // The first cycle >= from at which the rank's calendars allow an ACT of bank group `group`,
   // and its booking. kNever: beyond a calendar's horizon (the caller then ignores them).
   Cycle act_slot(const Rank& r, uint32_t group, Cycle from) const;
+  // `b`, or a later cycle if an ACT at b would leave too short a gap before it (see the .cpp).
+  Cycle packed_act(const Rank& r, Cycle b) const;
   void book_act(Rank& r, uint32_t group, Cycle at);
   // The same for a column command whose data starts `lead` cycles after it on `bus`.
   Cycle column_slot(const Rank& r, uint32_t group, Cycle from, Cycle lead, const Calendar& bus) const;

@@ -29,6 +29,12 @@ struct DramTimingConfig {
   // the bank bits (a power-of-two stride) spread over banks instead of conflicting in one.
   bool hash_banks = true;
   RowPolicy row_policy = RowPolicy::kOpen;
+  // true: an ACT less than tRC after its rank's previous ACT is placed so that the gap
+  // between them (where tFAW allows an ACT) is a whole number of tRRD_S slots, as a controller
+  // with requests queued issues activates back to back (dram_banked.cpp, packed_act); it
+  // moves by under tRRD_S.
+  // false: each ACT at the first cycle it fits, which wastes the odd cycles of every gap.
+  bool pack_activates = true;
 
   // Minimum times, ns. GDDR5 at 8 Gbit/s: CK 2 GHz, tCK 0.5 ns. The array timings are SK
   // hynix's H5GQ1H24AFR datasheet (as gem5's GDDR5_4000_2x32 transcribes it; Ramulator's

@@ -166,6 +166,36 @@ TEST(DramBanked, FawAllowsFourActivatesPerWindow) {
   for (int i = 0; i < 5; ++i) EXPECT_EQ(r[i].done, act[i] + kRcd + kCl + kBurst) << i;
 }
 
+// Activates booked in arrival order leave gaps a controller with a queue would fill: an ACT
+// 4 cycles past the previous one's tRRD slot would waste those 4 cycles (no ACT fits in them).
+// Packed, it moves to a whole tRRD slot past, and a request that arrives later but was ready
+// earlier takes the slot left before it. Returns the three requests' ACT cycles.
+std::vector<Cycle> three_activates(bool pack) {
+  DramConfig c = one_channel();
+  c.banked.pack_activates = pack;
+  Rig rig(c);
+  Sent r[3];
+  Script s("script", [&] {
+    r[0] = read32(rig.port, 0 * kBank, 0);   // bank 0: ACT at 0, its tRRD slot [0, 6)
+    r[1] = read32(rig.port, 1 * kBank, 10);  // bank 1, ready at 10
+    r[2] = read32(rig.port, 2 * kBank, 0);   // bank 2, ready at 0 but sent last
+  });
+  sc_core::sc_start();
+  std::vector<Cycle> acts;
+  for (const Sent& x : r) acts.push_back(x.done - (kRcd + kCl + kBurst));
+  return acts;
+}
+
+TEST(DramBanked, ActivatesLeaveWholeTrrdSlotsBetweenThem) {
+  REQUIRE_FRESH_SYSTEMC();
+  EXPECT_EQ(three_activates(true), (std::vector<Cycle>{0, 12, 6}));  // no cycle lost
+}
+
+TEST(DramBanked, UnpackedActivatesWasteTheOddCyclesOfAGap) {
+  REQUIRE_FRESH_SYSTEMC();
+  EXPECT_EQ(three_activates(false), (std::vector<Cycle>{0, 10, 16}));  // [6, 10) unused
+}
+
 TEST(DramBanked, RefreshBlocksTheRankForTrfcAndClosesRows) {
   REQUIRE_FRESH_SYSTEMC();
   Rig rig(one_channel());
