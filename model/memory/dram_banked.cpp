@@ -195,7 +195,9 @@ constexpr Cycle kNone = transport::ReservationCalendar::kNone;
 // land) is placed so that the part of the gap where tFAW would allow an ACT is a whole number
 // of tRRD slots, each usable by another bank's request, as the controller would have issued
 // those first. It moves by less than tRRD. A gap the tFAW window closes is no loss, and an ACT
-// a whole row cycle after the previous one (its own bank's next) moves not at all.
+// a whole row cycle after the previous one (its own bank's next) moves not at all. Only an
+// ACT that waited is packed (access(), place_act): with nothing queued, nothing would take the
+// cycles it leaves, and a lightly loaded DRAM is timed as if packing were off.
 Cycle BankedDram::packed_act(const Rank& r, Cycle b) const {
   const uint32_t spacing = timing_.rrd_s;
   if (spacing < 2 || timing_.rc <= spacing) return b;
@@ -212,11 +214,11 @@ Cycle BankedDram::packed_act(const Rank& r, Cycle b) const {
   return b;
 }
 
-Cycle BankedDram::act_slot(const Rank& r, uint32_t group, Cycle from) const {
+Cycle BankedDram::act_slot(const Rank& r, uint32_t group, Cycle from, bool pack) const {
   // Each calendar can only move the cycle later; stop when all three agree.
   for (Cycle a = from;;) {
     Cycle b = gap(r.acts, a, timing_.rrd_s);
-    if (b != kNone && config_.banked.pack_activates) b = packed_act(r, b);
+    if (b != kNone && pack) b = packed_act(r, b);
     if (b != kNone) b = gap(r.group_acts[group], b, timing_.rrd_l);
     if (b != kNone) b = gap(r.window, b, timing_.faw);
     if (b == kNone || b == a) return b == kNone ? kNever : b;
@@ -275,10 +277,17 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   rank.group_acts[at.group].retire_before(now);
   rank.group_columns[at.group].retire_before(now);
 
-  // An ACT at or after `from`, by the rank's calendars, outside the latest refresh.
-  auto place_act = [&](Cycle from) {
-    Cycle a = act_slot(rank, at.group, from);
-    if (a != kNever && a >= rank.refresh_from && a < rank.refresh_to) a = act_slot(rank, at.group, rank.refresh_to);
+  // An ACT at or after `from`, by the rank's calendars, outside the latest refresh. `ready`:
+  // where it would go if the DRAM served nothing else (the request's arrival, or its own PRE's
+  // end). Only an ACT that waited past it (its bank or its rank busy: a controller would have
+  // held it in its queue) is packed; one issued the moment it could be is not, since with
+  // nothing queued no other request would take the cycles packing leaves.
+  auto place_act = [&](Cycle from, Cycle ready) {
+    const bool pack = config_.banked.pack_activates;
+    Cycle a = act_slot(rank, at.group, from, false);
+    if (pack && a != kNever && a > ready) a = act_slot(rank, at.group, a, true);
+    if (a != kNever && a >= rank.refresh_from && a < rank.refresh_to)
+      a = act_slot(rank, at.group, rank.refresh_to, pack);
     if (a == kNever) {  // beyond the horizon: without the rank's constraints
       a = from < rank.refresh_from || from >= rank.refresh_to ? from : rank.refresh_to;
       ++overflows_;
@@ -291,7 +300,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
   // is served there as a miss and leaves the bank's state, which is later, alone; else it
   // queues behind, first come, first served.
   if (bank.last_act != kNever && arrive + timing_.rc <= bank.last_act) {
-    const Cycle act = place_act(arrive);
+    const Cycle act = place_act(arrive, arrive);
     if (act + timing_.rc <= bank.last_act) {
       ++k.activates;
       ++k.precharges;
@@ -318,7 +327,7 @@ BankedDram::Result BankedDram::access(uint32_t channel, uint64_t addr, uint32_t 
       pre = conflict ? later(arrive, bank.next_pre) : 0;
       Cycle from = later(conflict ? pre + timing_.rp : arrive, bank.next_act);
       if (bank.last_act != kNever) from = later(from, bank.last_act + timing_.rc);
-      act = place_act(from);
+      act = place_act(from, conflict ? arrive + timing_.rp : arrive);
       col_ready = act + timing_.rcd;
       first = conflict ? pre : act;
     }

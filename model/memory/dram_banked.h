@@ -15,9 +15,9 @@
 // kept in call order: a bank serves its requests first come, first served in the order they
 // arrive, except that a request earlier in time than the bank's latest ACT, whose own row
 // cycle fits before it, is served there without touching that state. Refresh is applied
-// lazily when a request reaches a refresh that fell due. Activates are packed (packed_act) so
-// that the gaps booking in arrival order leaves between them hold whole tRRD slots, as a
-// controller with a queue fills them. A queue that reorders requests already answered (row
+// lazily when a request reaches a refresh that fell due. Activates that had to wait are packed
+// (packed_act) so that the gaps booking in arrival order leaves between them hold whole tRRD
+// slots, as a controller with a queue fills them. A queue that reorders requests already answered (row
 // hits first) cannot be modelled this way; docs/memory-system.md, "Banked DRAM".
 //
 // The class is plain C++ (no SystemC): Dram owns one and calls it from b_transport.
@@ -136,9 +136,11 @@ class BankedDram {
 
   void refresh_until(Channel& ch, uint32_t rank, Cycle until, ChannelCounters& k);
   // The first cycle >= from at which the rank's calendars allow an ACT of bank group `group`,
-  // and its booking. kNever: beyond a calendar's horizon (the caller then ignores them).
-  Cycle act_slot(const Rank& r, uint32_t group, Cycle from) const;
-  // `b`, or a later cycle if an ACT at b would leave too short a gap before it (see the .cpp).
+  // and its booking; `pack`: packed as well (packed_act). kNever: beyond a calendar's horizon
+  // (the caller then ignores them).
+  Cycle act_slot(const Rank& r, uint32_t group, Cycle from, bool pack) const;
+  // `b`, or a later cycle if an ACT at b would leave a gap before it that is not a whole number
+  // of tRRD slots (see the .cpp).
   Cycle packed_act(const Rank& r, Cycle b) const;
   void book_act(Rank& r, uint32_t group, Cycle at);
   // The same for a column command whose data starts `lead` cycles after it on `bus`.

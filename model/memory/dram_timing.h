@@ -29,10 +29,11 @@ struct DramTimingConfig {
   // the bank bits (a power-of-two stride) spread over banks instead of conflicting in one.
   bool hash_banks = true;
   RowPolicy row_policy = RowPolicy::kOpen;
-  // true: an ACT less than tRC after its rank's previous ACT is placed so that the gap
-  // between them (where tFAW allows an ACT) is a whole number of tRRD_S slots, as a controller
-  // with requests queued issues activates back to back (dram_banked.cpp, packed_act); it
-  // moves by under tRRD_S.
+  // true: an ACT that had to wait (its bank or its rank busy when it was ready) and comes less
+  // than tRC after its rank's previous ACT is placed so that the gap between them (where tFAW
+  // allows an ACT) is a whole number of tRRD_S slots, as a controller with requests queued
+  // issues activates back to back (dram_banked.cpp, packed_act); it moves by under tRRD_S.
+  // An ACT issued the moment its request was ready does not move.
   // false: each ACT at the first cycle it fits, which wastes the odd cycles of every gap.
   bool pack_activates = true;
 

@@ -166,19 +166,22 @@ TEST(DramBanked, FawAllowsFourActivatesPerWindow) {
   for (int i = 0; i < 5; ++i) EXPECT_EQ(r[i].done, act[i] + kRcd + kCl + kBurst) << i;
 }
 
-// Activates booked in arrival order leave gaps a controller with a queue would fill: an ACT
-// 4 cycles past the previous one's tRRD slot would waste those 4 cycles (no ACT fits in them).
-// Packed, it moves to a whole tRRD slot past, and a request that arrives later but was ready
-// earlier takes the slot left before it. Returns the three requests' ACT cycles.
-std::vector<Cycle> three_activates(bool pack) {
+// Activates booked in arrival order leave gaps a controller with a queue would fill. Bank 1's
+// second request (another row) waits for its bank: PRE at tRAS 32, ACT at tRC 46, 34 cycles
+// after the end of bank 2's tRRD slot [6, 12), 4 cycles more than five whole slots. Packed
+// (it had to wait), it moves to 48, and a request that arrives last but is ready at 42 takes
+// the slot [42, 48) left before it. Unpacked, that request finds [42, 48) cut by [46, 52)
+// and waits until 52. Returns the four requests' ACT cycles.
+std::vector<Cycle> queued_activates(bool pack) {
   DramConfig c = one_channel();
   c.banked.pack_activates = pack;
   Rig rig(c);
-  Sent r[3];
+  Sent r[4];
   Script s("script", [&] {
-    r[0] = read32(rig.port, 0 * kBank, 0);   // bank 0: ACT at 0, its tRRD slot [0, 6)
-    r[1] = read32(rig.port, 1 * kBank, 10);  // bank 1, ready at 10
-    r[2] = read32(rig.port, 2 * kBank, 0);   // bank 2, ready at 0 but sent last
+    r[0] = read32(rig.port, 1 * kBank, 0);         // bank 1, row 0: ACT at 0, its slot [0, 6)
+    r[1] = read32(rig.port, 2 * kBank, 4);         // bank 2: waits for the slot, ACT at 6
+    r[2] = read32(rig.port, kRow + 1 * kBank, 0);  // bank 1, row 1: waits for its bank
+    r[3] = read32(rig.port, 3 * kBank, 42);        // bank 3, ready at 42 but sent last
   });
   sc_core::sc_start();
   std::vector<Cycle> acts;
@@ -186,14 +189,30 @@ std::vector<Cycle> three_activates(bool pack) {
   return acts;
 }
 
-TEST(DramBanked, ActivatesLeaveWholeTrrdSlotsBetweenThem) {
+TEST(DramBanked, ActivatesThatWaitedLeaveWholeTrrdSlotsBetweenThem) {
   REQUIRE_FRESH_SYSTEMC();
-  EXPECT_EQ(three_activates(true), (std::vector<Cycle>{0, 12, 6}));  // no cycle lost
+  EXPECT_EQ(queued_activates(true), (std::vector<Cycle>{0, 6, 48, 42}));  // no cycle lost
 }
 
 TEST(DramBanked, UnpackedActivatesWasteTheOddCyclesOfAGap) {
   REQUIRE_FRESH_SYSTEMC();
-  EXPECT_EQ(three_activates(false), (std::vector<Cycle>{0, 10, 16}));  // [6, 10) unused
+  EXPECT_EQ(queued_activates(false), (std::vector<Cycle>{0, 6, 46, 52}));  // [42, 46) unused
+}
+
+// With nothing queued, packing changes nothing: an ACT issued the moment its request arrives
+// (its bank idle, its rank's tRRD slot free) stays there, 10 cycles after the previous one,
+// although that gap is not a whole number of tRRD slots. Nothing else would use [6, 10).
+TEST(DramBanked, ActivatesThatDidNotWaitAreNotMoved) {
+  REQUIRE_FRESH_SYSTEMC();
+  Rig rig(one_channel());  // packing on, the default
+  Sent r[2];
+  Script s("script", [&] {
+    r[0] = read32(rig.port, 0 * kBank, 0);
+    r[1] = read32(rig.port, 1 * kBank, 10);
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(r[0].done, 0 + kRcd + kCl + kBurst);
+  EXPECT_EQ(r[1].done, 10 + kRcd + kCl + kBurst);
 }
 
 TEST(DramBanked, RefreshBlocksTheRankForTrfcAndClosesRows) {
