@@ -17,8 +17,8 @@
 // cycle fits before it, is served there without touching that state. Refresh is applied
 // lazily when a request reaches a refresh that fell due. Activates that had to wait are packed
 // (packed_act) so that the gaps booking in arrival order leaves between them hold whole tRRD
-// slots, as a controller with a queue fills them. A queue that reorders requests already answered (row
-// hits first) cannot be modelled this way; docs/memory-system.md, "Banked DRAM".
+// slots, as a controller with a queue fills them. A queue that reorders requests already
+// answered (row hits first) cannot be modelled this way; docs/memory-system.md, "Banked DRAM".
 //
 // The class is plain C++ (no SystemC): Dram owns one and calls it from b_transport.
 #pragma once
